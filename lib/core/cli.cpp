@@ -1,0 +1,136 @@
+#include "core/cli.hpp"
+
+#include "core/errors.hpp"
+#include "core/output.hpp"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <toml++/toml.h>
+
+namespace softgrain {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void list_scenes(const SceneRegistry& scenes)
+{
+    std::size_t width = 0;
+    for (const auto& scene : scenes.all()) width = std::max(width, scene.name.size());
+    for (const auto& scene : scenes.all())
+        std::cout << std::left << std::setw(static_cast<int>(width) + 2) << scene.name << scene.description << "\n";
+}
+
+void describe_scene(const Scene& scene)
+{
+    std::cout << scene.name << ": " << scene.description << "\n\n";
+    std::cout << std::left << std::setw(18) << "parameter" << std::setw(14) << "default" << std::setw(10) << "unit"
+              << "meaning (allowed)\n";
+    for (const auto& p : scene.parameters)
+        std::cout << std::left << std::setw(18) << p.name << std::setw(14) << to_string(p.default_value)
+                  << std::setw(10) << p.unit << p.description << " (" << p.allowed() << ")\n";
+}
+
+// A scene to run: a registered name, or a TOML file naming its base scene with `scene = "..."`.
+struct RunRequest {
+    const Scene* scene = nullptr;
+    std::string output_name;
+    Parameters parameters{{}};
+};
+
+RunRequest resolve_scene(const std::string& target, const SceneRegistry& scenes)
+{
+    const bool is_file = fs::path(target).extension() == ".toml";
+    if (!is_file) {
+        const Scene& scene = scenes.find(target);
+        return {&scene, scene.name, Parameters(scene.parameters)};
+    }
+    if (!fs::is_regular_file(target)) throw InputError("scene file '" + target + "' does not exist");
+    toml::table table;
+    try {
+        table = toml::parse_file(target);
+    } catch (const toml::parse_error& e) {
+        const auto& where = e.source().begin;
+        throw InputError("scene file '" + target + "' is not valid TOML (line " + std::to_string(where.line) +
+                         ", column " + std::to_string(where.column) + "): " + std::string(e.description()));
+    }
+    const auto base = table["scene"].value<std::string>();
+    if (!base)
+        throw InputError("scene file '" + target + "': key 'scene' is missing or not a string; allowed: the name "
+                         "of a scene from 'softgrain list', e.g. scene = \"core.harmonic\"");
+    const Scene& scene = scenes.find(*base);
+    RunRequest request{&scene, fs::path(target).stem().string(), Parameters(scene.parameters)};
+    request.parameters.set_from_toml(table, target);
+    return request;
+}
+
+void apply_overrides(Parameters& parameters, const std::vector<std::string>& assignments)
+{
+    for (const auto& assignment : assignments) {
+        const auto equals = assignment.find('=');
+        if (equals == std::string::npos || equals == 0)
+            throw InputError("--set '" + assignment + "' is not of the form key=value");
+        parameters.set_from_text(assignment.substr(0, equals), assignment.substr(equals + 1));
+    }
+}
+
+int run_scene(const std::string& target, const std::vector<std::string>& assignments, const std::string& out_dir,
+              bool quiet, const SceneRegistry& scenes)
+{
+    RunRequest request = resolve_scene(target, scenes);
+    apply_overrides(request.parameters, assignments);
+    RunContext context(out_dir, request.output_name, request.parameters, quiet);
+    request.scene->run(request.parameters, context);
+    const fs::path written = context.commit();
+    if (!quiet) std::cout << "wrote " << written.string() << "\n";
+    return exit_success;
+}
+
+} // namespace
+
+int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
+{
+    CLI::App app{"softgrain: particles with shape degrees of freedom (SPD, DPM, VSM, SD)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", software_version());
+
+    auto* list = app.add_subcommand("list", "every named scene, one per line: name, then a one-line description");
+
+    std::string describe_name;
+    auto* describe = app.add_subcommand("describe", "a scene's parameters: name, default, unit, meaning");
+    describe->add_option("scene", describe_name, "scene name")->required();
+
+    std::string run_target, out_dir = "out";
+    std::vector<std::string> assignments;
+    bool quiet = false;
+    auto* run = app.add_subcommand("run", "run a named scene or a TOML scene file");
+    run->add_option("scene", run_target, "scene name or file.toml")->required();
+    run->add_option("--set", assignments, "override a parameter: key=value (repeatable)")->take_all();
+    run->add_option("--out", out_dir, "output directory; results go to DIR/<scene>/")->capture_default_str();
+    run->add_flag("--quiet", quiet, "no progress or messages on success");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? exit_success : exit_bad_input;
+    }
+
+    try {
+        if (*list) list_scenes(scenes);
+        else if (*describe) describe_scene(scenes.find(describe_name));
+        else if (*run) return run_scene(run_target, assignments, out_dir, quiet, scenes);
+        return exit_success;
+    } catch (const InputError& e) {
+        std::cerr << "softgrain: bad input: " << e.what() << "\n";
+        return exit_bad_input;
+    } catch (const NumericalError& e) {
+        std::cerr << "softgrain: " << e.what() << "\n";
+        return exit_numerical_failure;
+    }
+}
+
+} // namespace softgrain

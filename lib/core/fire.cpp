@@ -1,0 +1,50 @@
+#include "core/fire.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace softgrain {
+
+FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force, const FireOptions& options)
+{
+    const double dofs = static_cast<double>(std::max<Eigen::Index>(1, x.size()));
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(x.size());
+    Eigen::VectorXd f(x.size());
+    FireResult result;
+    result.energy = energy_and_force(x, f);
+
+    double dt = options.dt_initial;
+    double alpha = options.alpha_start;
+    int downhill_steps = 0;
+    for (result.iterations = 0; result.iterations < options.max_iterations; ++result.iterations) {
+        result.force_rms = std::sqrt(f.squaredNorm() / dofs);
+        const double kinetic = 0.5 * v.squaredNorm() / dofs;
+        if (result.force_rms < options.force_tolerance && kinetic < options.kinetic_tolerance) {
+            result.converged = true;
+            return result;
+        }
+        const double power = f.dot(v);
+        if (power > 0) {
+            const double force_norm = f.norm();
+            if (force_norm > 0) v = (1.0 - alpha) * v + alpha * v.norm() * f / force_norm;
+            if (++downhill_steps > options.n_min) {
+                dt = std::min(dt * options.f_inc, options.dt_max);
+                alpha *= options.f_alpha;
+            }
+        } else {
+            v.setZero();
+            dt *= options.f_dec;
+            alpha = options.alpha_start;
+            downhill_steps = 0;
+        }
+        // Velocity Verlet with unit masses.
+        v += 0.5 * dt * f;
+        x += dt * v;
+        result.energy = energy_and_force(x, f);
+        v += 0.5 * dt * f;
+    }
+    result.force_rms = std::sqrt(f.squaredNorm() / dofs);
+    return result;
+}
+
+} // namespace softgrain

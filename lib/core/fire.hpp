@@ -1,0 +1,43 @@
+// FIRE minimiser (Bitzek, Koskinen, Gähler, Moseler, Gumbsch, Phys. Rev. Lett. 97, 170201 (2006)).
+//
+// Damped molecular dynamics (velocity Verlet, unit masses) whose velocity is mixed towards the force,
+// v <- (1 - alpha) v + alpha |v| F/|F|, with an adaptive step: after N_min downhill steps (P = F.v > 0)
+// dt grows by f_inc up to dt_max and alpha shrinks by f_alpha; on an uphill step (P <= 0) the velocity is
+// zeroed, dt shrinks by f_dec and alpha is reset. Parameter defaults are the paper's.
+//
+// Stopping rule: the root-mean-square force per degree of freedom is below `force_tolerance` AND the
+// kinetic energy per degree of freedom is below `kinetic_tolerance`.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+
+namespace softgrain {
+
+struct FireOptions {
+    double dt_initial = 1e-2;
+    double dt_max = 1e-1;
+    double force_tolerance = 1e-10;   // [force]
+    double kinetic_tolerance = 1e-20; // [energy] per degree of freedom
+    long max_iterations = 1000000;
+    int n_min = 5;
+    double f_inc = 1.1;
+    double f_dec = 0.5;
+    double alpha_start = 0.1;
+    double f_alpha = 0.99;
+};
+
+struct FireResult {
+    bool converged = false;
+    long iterations = 0;
+    double energy = 0;
+    double force_rms = 0;
+};
+
+// energy_and_force(x, f) returns U(x) and writes f = -grad U(x).
+using EnergyAndForce = std::function<double(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+
+FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force, const FireOptions& options);
+
+} // namespace softgrain

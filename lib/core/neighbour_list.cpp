@@ -1,0 +1,135 @@
+#include "core/neighbour_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace softgrain {
+
+template <int Dim>
+NeighbourList<Dim>::NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box)
+    : cutoff_(cutoff), skin_(skin), box_(periodic_box)
+{
+    if (!(cutoff > 0) || !(skin >= 0)) throw std::invalid_argument("NeighbourList: need cutoff > 0, skin >= 0");
+}
+
+template <int Dim>
+Vec<Dim> NeighbourList<Dim>::separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const
+{
+    Vec<Dim> d = x_j - x_i;
+    if (box_)
+        for (int k = 0; k < Dim; ++k) d[k] -= (*box_)[k] * std::round(d[k] / (*box_)[k]);
+    return d;
+}
+
+template <int Dim>
+bool NeighbourList<Dim>::needs_rebuild(const Points<Dim>& positions) const
+{
+    if (builds_ == 0 || positions.cols() != reference_positions_.cols()) return true;
+    const double limit_squared = 0.25 * skin_ * skin_;
+    for (Eigen::Index i = 0; i < positions.cols(); ++i)
+        if (separation(reference_positions_.col(i), positions.col(i)).squaredNorm() > limit_squared) return true;
+    return false;
+}
+
+template <int Dim>
+bool NeighbourList<Dim>::update(const Points<Dim>& positions)
+{
+    if (!needs_rebuild(positions)) return false;
+    build(positions);
+    return true;
+}
+
+template <int Dim>
+void NeighbourList<Dim>::build(const Points<Dim>& positions)
+{
+    const Eigen::Index n = positions.cols();
+    const double reach = cutoff_ + skin_;
+    Vec<Dim> origin, extent;
+    if (box_) {
+        origin.setZero();
+        extent = *box_;
+    } else if (n > 0) {
+        origin = positions.rowwise().minCoeff();
+        extent = (positions.rowwise().maxCoeff() - origin).array() + 1e-12 * reach;
+    } else {
+        origin.setZero();
+        extent.setOnes();
+    }
+
+    // Cells of side >= reach; in a periodic box the side divides the box exactly.
+    Eigen::Matrix<int, Dim, 1> cells;
+    Vec<Dim> side;
+    for (int k = 0; k < Dim; ++k) {
+        cells[k] = std::max(1, static_cast<int>(std::floor(extent[k] / reach)));
+        side[k] = extent[k] / cells[k];
+    }
+    const auto cell_of = [&](const Vec<Dim>& x) {
+        Eigen::Matrix<int, Dim, 1> c;
+        for (int k = 0; k < Dim; ++k) {
+            double u = (x[k] - origin[k]) / side[k];
+            if (box_) u -= cells[k] * std::floor(u / cells[k]);
+            c[k] = std::clamp(static_cast<int>(std::floor(u)), 0, cells[k] - 1); // guards round-off at the edge
+        }
+        return c;
+    };
+    const auto flat = [&](const Eigen::Matrix<int, Dim, 1>& c) {
+        int index = 0;
+        for (int k = Dim - 1; k >= 0; --k) index = index * cells[k] + c[k];
+        return index;
+    };
+
+    const int total_cells = cells.prod();
+    std::vector<int> head(static_cast<std::size_t>(total_cells), -1), next(static_cast<std::size_t>(n), -1);
+    std::vector<Eigen::Matrix<int, Dim, 1>> cell_index(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        cell_index[i] = cell_of(positions.col(i));
+        const int f = flat(cell_index[i]);
+        next[i] = head[f];
+        head[f] = static_cast<int>(i);
+    }
+
+    // Offsets of the 3^Dim adjacent cells.
+    std::vector<Eigen::Matrix<int, Dim, 1>> offsets;
+    const int adjacent = Dim == 2 ? 9 : 27;
+    for (int m = 0; m < adjacent; ++m) {
+        Eigen::Matrix<int, Dim, 1> o;
+        int rest = m;
+        for (int k = 0; k < Dim; ++k) {
+            o[k] = rest % 3 - 1;
+            rest /= 3;
+        }
+        offsets.push_back(o);
+    }
+
+    pairs_.clear();
+    const double reach_squared = reach * reach;
+    std::vector<int> visited;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        visited.clear();
+        for (const auto& o : offsets) {
+            Eigen::Matrix<int, Dim, 1> c = cell_index[i] + o;
+            bool outside = false;
+            for (int k = 0; k < Dim; ++k) {
+                if (box_) c[k] = (c[k] + cells[k]) % cells[k];
+                else outside = outside || c[k] < 0 || c[k] >= cells[k];
+            }
+            if (outside) continue;
+            const int f = flat(c);
+            // With fewer than three cells along a periodic side, two offsets can name the same cell.
+            if (std::find(visited.begin(), visited.end(), f) != visited.end()) continue;
+            visited.push_back(f);
+            for (int j = head[f]; j >= 0; j = next[j])
+                if (j > i && separation(positions.col(i), positions.col(j)).squaredNorm() < reach_squared)
+                    pairs_.emplace_back(static_cast<int>(i), j);
+        }
+    }
+    std::sort(pairs_.begin(), pairs_.end()); // deterministic order, independent of binning
+    reference_positions_ = positions;
+    ++builds_;
+}
+
+template class NeighbourList<2>;
+template class NeighbourList<3>;
+
+} // namespace softgrain

@@ -1,0 +1,46 @@
+// Verlet neighbour list built with a cell list (linked cells), in 2D or 3D, open or periodic.
+//
+// Pairs (i < j) closer than cutoff + skin are listed. The list stays valid, i.e. contains every pair
+// closer than `cutoff`, until some point has moved more than skin/2 since the last build; `update`
+// checks this and rebuilds only then. A rebuild costs O(N): points are binned into cells of side
+// >= cutoff + skin and each point is compared with the points of its own and adjacent cells.
+#pragma once
+
+#include "core/vector.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace softgrain {
+
+template <int Dim>
+class NeighbourList {
+public:
+    // `periodic_box`: side lengths of a periodic box with its corner at the origin (minimum image);
+    // absent for open boundaries.
+    NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box = std::nullopt);
+
+    // Rebuilds the list if needed; returns true if it did.
+    bool update(const Points<Dim>& positions);
+    const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
+    int builds() const { return builds_; }
+
+    // x_j - x_i, by the minimum image in a periodic box.
+    Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const;
+
+private:
+    void build(const Points<Dim>& positions);
+    bool needs_rebuild(const Points<Dim>& positions) const;
+
+    double cutoff_, skin_;
+    std::optional<Vec<Dim>> box_;
+    Points<Dim> reference_positions_;
+    std::vector<std::pair<int, int>> pairs_;
+    int builds_ = 0;
+};
+
+extern template class NeighbourList<2>;
+extern template class NeighbourList<3>;
+
+} // namespace softgrain

@@ -1,0 +1,94 @@
+// What a run writes: `DIR/<scene>/summary.json` and self-describing `*.dat` tables.
+//
+// Everything is written into a hidden partial directory beside the target and moved into place by
+// `commit()` only when the run has finished; a run that throws leaves nothing behind that looks complete.
+//
+// A table file starts with `#` lines (generator, version, scene, parameters, one line per column with
+// its unit and meaning), then one plain line with the column names, then whitespace-separated rows.
+// gnuplot reads it directly: `set datafile columnheaders; plot "f.dat" using "t":"x"`.
+#pragma once
+
+#include "core/parameters.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace softgrain {
+
+std::string software_version();
+
+struct Column {
+    std::string name;        // a gnuplot-friendly identifier, e.g. "dt_over_dtc"
+    std::string unit;        // "1" for dimensionless
+    std::string description; // meaning, with the paper's symbol or equation where there is one
+};
+
+class Table {
+public:
+    Table(const std::filesystem::path& path, const std::vector<Column>& columns, const std::string& preamble);
+    void row(const std::vector<double>& values); // one value per column, in order
+    void close();
+
+private:
+    std::ofstream stream_;
+    std::size_t width_;
+};
+
+// Progress on stderr (percent, elapsed, estimated remaining) for long runs; silent when quiet or when
+// stderr is not a terminal. Prints at most twice a second.
+class Progress {
+public:
+    Progress(std::string label, bool enabled);
+    void update(double fraction_done);
+    void finish();
+
+private:
+    std::string label_;
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_, last_print_;
+    bool printed_ = false;
+};
+
+class RunContext {
+public:
+    RunContext(const std::filesystem::path& out_dir, std::string scene_name, const Parameters& parameters,
+               bool quiet);
+    ~RunContext(); // removes the partial directory if the run did not commit
+
+    RunContext(const RunContext&) = delete;
+    RunContext& operator=(const RunContext&) = delete;
+
+    // Scalar results of the run; summary()["key"] = value.
+    nlohmann::json& summary() { return summary_; }
+    Table& table(const std::string& file_name, const std::vector<Column>& columns);
+    Progress progress(const std::string& label) const { return Progress(label, !quiet_); }
+
+    // Time steps (or minimiser iterations) taken; with the wall time they give the cost per step.
+    void count_steps(std::int64_t steps) { steps_ += steps; }
+    void record_seed(std::uint64_t seed) { summary_["seed"] = seed; }
+
+    // Finishes the summary (parameters, version, wall time, time per step, peak memory), closes the
+    // tables and moves the directory into place. Returns the final directory.
+    std::filesystem::path commit();
+
+private:
+    std::filesystem::path final_dir_, partial_dir_;
+    std::string scene_name_;
+    nlohmann::json parameters_json_;
+    std::string preamble_;
+    bool quiet_;
+    bool committed_ = false;
+    nlohmann::json summary_ = nlohmann::json::object();
+    std::vector<std::unique_ptr<Table>> tables_;
+    std::int64_t steps_ = 0;
+    std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace softgrain

@@ -1,0 +1,322 @@
+#include "core/parameters.hpp"
+
+#include "core/errors.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+namespace softgrain {
+
+namespace {
+
+std::string format_number(double x)
+{
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    std::ostringstream out;
+    out.precision(12);
+    out << x;
+    return out.str();
+}
+
+std::string join(const std::vector<std::string>& words, const std::string& separator)
+{
+    std::string joined;
+    for (const auto& word : words) joined += (joined.empty() ? "" : separator) + word;
+    return joined;
+}
+
+[[noreturn]] void refuse(const ParameterSpec& spec, const std::string& shown_value, const std::string& why)
+{
+    throw InputError("parameter '" + spec.name + "' = '" + shown_value + "' " + why + "; allowed: " +
+                     spec.allowed());
+}
+
+// Whole-string parse: "1.5x" or "" are refused, not read as 1.5 or 0.
+std::optional<double> parse_real(const std::string& text, bool accepts_infinity)
+{
+    if (text == "inf" || text == "+inf" || text == "infinity")
+        return accepts_infinity ? std::optional<double>(std::numeric_limits<double>::infinity()) : std::nullopt;
+    double value = 0.0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::optional<long long> parse_integer(const std::string& text)
+{
+    long long value = 0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end) return std::nullopt;
+    return value;
+}
+
+} // namespace
+
+namespace {
+
+ParameterSpec make_spec(std::string name, ParameterType type, ParameterValue value, std::string unit,
+                        std::string description)
+{
+    ParameterSpec spec;
+    spec.name = std::move(name);
+    spec.type = type;
+    spec.default_value = std::move(value);
+    spec.unit = std::move(unit);
+    spec.description = std::move(description);
+    return spec;
+}
+
+} // namespace
+
+ParameterSpec ParameterSpec::real(std::string name, double value, std::string unit, std::string description)
+{
+    return make_spec(std::move(name), ParameterType::real, value, std::move(unit), std::move(description));
+}
+
+ParameterSpec ParameterSpec::integer(std::string name, long long value, std::string unit, std::string description)
+{
+    return make_spec(std::move(name), ParameterType::integer, value, std::move(unit), std::move(description));
+}
+
+ParameterSpec ParameterSpec::boolean(std::string name, bool value, std::string description)
+{
+    return make_spec(std::move(name), ParameterType::boolean, value, std::string(1, '-'), std::move(description));
+}
+
+ParameterSpec ParameterSpec::choice(std::string name, std::string value, std::vector<std::string> choices,
+                                    std::string description)
+{
+    ParameterSpec spec = make_spec(std::move(name), ParameterType::choice, std::move(value), std::string(1, '-'),
+                                   std::move(description));
+    spec.choices = std::move(choices);
+    return spec;
+}
+
+ParameterSpec& ParameterSpec::positive()
+{
+    min = 0.0;
+    min_inclusive = false;
+    return *this;
+}
+
+ParameterSpec& ParameterSpec::non_negative() { return at_least(0.0); }
+
+ParameterSpec& ParameterSpec::at_least(double lower)
+{
+    min = lower;
+    min_inclusive = true;
+    return *this;
+}
+
+ParameterSpec& ParameterSpec::below(double upper)
+{
+    max = upper;
+    max_inclusive = false;
+    return *this;
+}
+
+ParameterSpec& ParameterSpec::at_most(double upper)
+{
+    max = upper;
+    max_inclusive = true;
+    return *this;
+}
+
+ParameterSpec& ParameterSpec::infinity_allowed()
+{
+    accepts_infinity = true;
+    return *this;
+}
+
+std::string ParameterSpec::type_name() const
+{
+    switch (type) {
+    case ParameterType::real: return "real";
+    case ParameterType::integer: return "integer";
+    case ParameterType::boolean: return "boolean";
+    case ParameterType::choice: return "choice";
+    }
+    return "?";
+}
+
+std::string ParameterSpec::allowed() const
+{
+    if (type == ParameterType::boolean) return "true or false";
+    std::ostringstream statement;
+    if (type == ParameterType::choice) {
+        statement << "one of " << join(choices, " | ");
+        return statement.str();
+    }
+    statement << (type == ParameterType::integer ? "an integer" : "a real number");
+    if (std::isfinite(min)) statement << (min_inclusive ? " >= " : " > ") << format_number(min);
+    if (std::isfinite(min) && std::isfinite(max)) statement << " and";
+    if (std::isfinite(max)) statement << (max_inclusive ? " <= " : " < ") << format_number(max);
+    if (accepts_infinity) statement << ", or inf";
+    if (unit != "-" && !unit.empty()) statement << " [" << unit << "]";
+    return statement.str();
+}
+
+std::string to_string(const ParameterValue& value)
+{
+    struct Printer {
+        std::string operator()(double x) const { return format_number(x); }
+        std::string operator()(long long n) const { return std::to_string(n); }
+        std::string operator()(bool b) const { return b ? "true" : "false"; }
+        std::string operator()(const std::string& s) const { return s; }
+    };
+    return std::visit(Printer{}, value);
+}
+
+Parameters::Parameters(std::vector<ParameterSpec> specs) : specs_(std::move(specs))
+{
+    for (const auto& spec : specs_) values_[spec.name] = spec.default_value;
+}
+
+const ParameterSpec& Parameters::spec(const std::string& name) const
+{
+    for (const auto& candidate : specs_)
+        if (candidate.name == name) return candidate;
+    std::vector<std::string> names;
+    for (const auto& candidate : specs_) names.push_back(candidate.name);
+    throw InputError("unknown parameter '" + name + "'; allowed: " + join(names, ", "));
+}
+
+void Parameters::assign(const ParameterSpec& spec, ParameterValue value, const std::string& shown_value)
+{
+    if (spec.type == ParameterType::choice) {
+        const auto& word = std::get<std::string>(value);
+        bool known = false;
+        for (const auto& allowed : spec.choices) known = known || allowed == word;
+        if (!known) refuse(spec, shown_value, "is not a known choice");
+    } else if (spec.type != ParameterType::boolean) {
+        const double x = spec.type == ParameterType::real ? std::get<double>(value)
+                                                           : static_cast<double>(std::get<long long>(value));
+        const bool infinite_ok = std::isinf(x) && x > 0 && spec.accepts_infinity;
+        const bool below_min = spec.min_inclusive ? x < spec.min : x <= spec.min;
+        const bool above_max = spec.max_inclusive ? x > spec.max : x >= spec.max;
+        if (!infinite_ok && (below_min || above_max)) refuse(spec, shown_value, "is out of range");
+    }
+    values_[spec.name] = std::move(value);
+}
+
+void Parameters::set_from_text(const std::string& key, const std::string& text)
+{
+    const ParameterSpec& s = spec(key);
+    switch (s.type) {
+    case ParameterType::real: {
+        auto x = parse_real(text, s.accepts_infinity);
+        if (!x) refuse(s, text, "is not a real number");
+        assign(s, *x, text);
+        return;
+    }
+    case ParameterType::integer: {
+        auto n = parse_integer(text);
+        if (!n) refuse(s, text, "is not an integer");
+        assign(s, *n, text);
+        return;
+    }
+    case ParameterType::boolean:
+        if (text != "true" && text != "false") refuse(s, text, "is not a boolean");
+        assign(s, text == "true", text);
+        return;
+    case ParameterType::choice: assign(s, text, text); return;
+    }
+}
+
+void Parameters::set_from_toml(const toml::table& table, const std::string& origin)
+{
+    for (const auto& [key_view, node] : table) {
+        const std::string key(key_view.str());
+        if (key == "scene") continue;
+        const ParameterSpec* s = nullptr;
+        try {
+            s = &spec(key);
+        } catch (const InputError& e) {
+            throw InputError(origin + ": " + e.what());
+        }
+        std::ostringstream shown;
+        node.visit([&](const auto& concrete) { shown << concrete; });
+        const auto wrong_type = [&] {
+            std::ostringstream toml_type;
+            toml_type << node.type();
+            throw InputError(origin + ": parameter '" + key + "' = '" + shown.str() + "' has the wrong type (a TOML " +
+                             toml_type.str() + "); allowed: " + s->allowed());
+        };
+        try {
+            switch (s->type) {
+            case ParameterType::real: {
+                std::optional<double> x;
+                if (node.is_floating_point() || node.is_integer()) x = node.value<double>();
+                else if (node.is_string()) x = parse_real(*node.value<std::string>(), s->accepts_infinity);
+                if (!x) wrong_type();
+                if (std::isinf(*x) && !s->accepts_infinity) refuse(*s, shown.str(), "is not finite");
+                assign(*s, *x, shown.str());
+                break;
+            }
+            case ParameterType::integer:
+                if (!node.is_integer()) wrong_type();
+                assign(*s, *node.value<long long>(), shown.str());
+                break;
+            case ParameterType::boolean:
+                if (!node.is_boolean()) wrong_type();
+                assign(*s, *node.value<bool>(), shown.str());
+                break;
+            case ParameterType::choice:
+                if (!node.is_string()) wrong_type();
+                assign(*s, *node.value<std::string>(), shown.str());
+                break;
+            }
+        } catch (const InputError& e) {
+            const std::string message = e.what();
+            if (message.rfind(origin, 0) == 0) throw;
+            throw InputError(origin + ": " + message);
+        }
+    }
+}
+
+const ParameterValue& Parameters::value(const std::string& name, ParameterType expected) const
+{
+    const ParameterSpec& s = spec(name);
+    if (s.type != expected)
+        throw std::logic_error("parameter '" + name + "' is a " + s.type_name() + ", read as another type");
+    return values_.at(name);
+}
+
+double Parameters::real(const std::string& name) const
+{
+    return std::get<double>(value(name, ParameterType::real));
+}
+
+long long Parameters::integer(const std::string& name) const
+{
+    return std::get<long long>(value(name, ParameterType::integer));
+}
+
+bool Parameters::boolean(const std::string& name) const
+{
+    return std::get<bool>(value(name, ParameterType::boolean));
+}
+
+const std::string& Parameters::choice(const std::string& name) const
+{
+    return std::get<std::string>(value(name, ParameterType::choice));
+}
+
+nlohmann::json Parameters::to_json() const
+{
+    nlohmann::json json = nlohmann::json::object();
+    for (const auto& s : specs_) {
+        const auto& v = values_.at(s.name);
+        if (s.type == ParameterType::real && std::isinf(std::get<double>(v))) json[s.name] = "inf";
+        else std::visit([&](const auto& x) { json[s.name] = x; }, v);
+    }
+    return json;
+}
+
+} // namespace softgrain

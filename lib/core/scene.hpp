@@ -1,0 +1,38 @@
+// Named scenes: a built-in default problem with its parameters and the function that runs it.
+//
+// Scene names are `<method>.<scene>` and, with their parameter names and summary keys, form the public
+// interface of softgrain: keep them stable. Each method registers its scenes in one function
+// (`register_core_scenes`, `register_sd_scenes`, ...); `lib/scenes.cpp` collects them.
+#pragma once
+
+#include "core/parameters.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace softgrain {
+
+class RunContext;
+
+struct Scene {
+    std::string name;
+    std::string description; // one line
+    std::vector<ParameterSpec> parameters;
+    std::function<void(const Parameters&, RunContext&)> run;
+};
+
+class SceneRegistry {
+public:
+    void add(Scene scene);
+    const Scene& find(const std::string& name) const; // InputError naming the known scenes if absent
+    const std::vector<Scene>& all() const { return scenes_; }
+
+private:
+    std::vector<Scene> scenes_;
+};
+
+// Every scene softgrain knows, in the order of `softgrain list`.
+SceneRegistry all_scenes();
+
+} // namespace softgrain

@@ -1,0 +1,155 @@
+// The `softgrain` command-line contract (DESIGN.md): list, describe, run; exit codes 0 / 2 / 3; bad input
+// names the key, the value and what is allowed; nothing half-written is left behind.
+#include "core/scene.hpp"
+#include "support/tolerance.hpp"
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+    int exit_code;
+    std::string output; // stdout and stderr
+};
+
+Outcome run_softgrain(const std::string& arguments)
+{
+    const std::string command = std::string(SOFTGRAIN_EXECUTABLE) + " " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::string output;
+    std::array<char, 4096> buffer{};
+    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) output += buffer.data();
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+fs::path scratch_directory(const std::string& name)
+{
+    const fs::path dir = fs::temp_directory_path() / ("softgrain-cli-" + name + "-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+} // namespace
+
+TEST_CASE("softgrain list names every registered scene, and describe works for each")
+{
+    const Outcome list = run_softgrain("list");
+    CHECK(list.exit_code == 0);
+    const softgrain::SceneRegistry scenes = softgrain::all_scenes();
+    for (const auto& scene : scenes.all()) {
+        CAPTURE(scene.name);
+        CHECK(contains(list.output, scene.name + " "));
+        const Outcome describe = run_softgrain("describe " + scene.name);
+        CHECK(describe.exit_code == 0);
+        for (const auto& parameter : scene.parameters) CHECK(contains(describe.output, parameter.name));
+    }
+}
+
+TEST_CASE("bad input exits with code 2 and names the key, the value and what is allowed")
+{
+    const fs::path dir = scratch_directory("bad");
+    const std::string out = " --out " + dir.string();
+
+    const Outcome unknown_key = run_softgrain("run core.harmonic --set viscosity=1" + out);
+    CHECK(unknown_key.exit_code == 2);
+    CHECK(contains(unknown_key.output, "'viscosity'"));
+    CHECK(contains(unknown_key.output, "allowed: mass, stiffness, dt, periods"));
+
+    const Outcome wrong_type = run_softgrain("run core.harmonic --set dt=fast" + out);
+    CHECK(wrong_type.exit_code == 2);
+    CHECK(contains(wrong_type.output, "'dt' = 'fast'"));
+    CHECK(contains(wrong_type.output, "a real number > 0"));
+
+    const Outcome negative_stiffness = run_softgrain("run core.harmonic --set stiffness=-5" + out);
+    CHECK(negative_stiffness.exit_code == 2);
+    CHECK(contains(negative_stiffness.output, "'stiffness' = '-5' is out of range"));
+    CHECK(contains(negative_stiffness.output, "> 0 [N/m]"));
+
+    const Outcome infinite = run_softgrain("run core.harmonic --set mass=inf" + out);
+    CHECK(infinite.exit_code == 2);
+    CHECK(contains(infinite.output, "'mass' = 'inf'"));
+
+    const Outcome unknown_scene = run_softgrain("run core.nothing" + out);
+    CHECK(unknown_scene.exit_code == 2);
+    CHECK(contains(unknown_scene.output, "'core.nothing'"));
+
+    const Outcome missing_file = run_softgrain("run " + (dir / "absent.toml").string() + out);
+    CHECK(missing_file.exit_code == 2);
+    CHECK(contains(missing_file.output, "absent.toml"));
+
+    write_file(dir / "malformed.toml", "scene = \"core.harmonic\"\nmass = = 3\n");
+    const Outcome malformed = run_softgrain("run " + (dir / "malformed.toml").string() + out);
+    CHECK(malformed.exit_code == 2);
+    CHECK(contains(malformed.output, "malformed.toml"));
+    CHECK(contains(malformed.output, "line 2"));
+
+    write_file(dir / "wrongtype.toml", "scene = \"core.harmonic\"\nperiods = \"many\"\n");
+    const Outcome toml_type = run_softgrain("run " + (dir / "wrongtype.toml").string() + out);
+    CHECK(toml_type.exit_code == 2);
+    CHECK(contains(toml_type.output, "'periods'"));
+
+    const Outcome no_assignment = run_softgrain("run core.harmonic --set dt" + out);
+    CHECK(no_assignment.exit_code == 2);
+
+    const Outcome unknown_option = run_softgrain("run core.harmonic --speed" + out);
+    CHECK(unknown_option.exit_code == 2);
+
+    // None of these left an output directory behind.
+    CHECK_FALSE(fs::exists(dir / "core.harmonic"));
+    CHECK_FALSE(fs::exists(dir / "malformed"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("run writes summary.json and self-describing tables; a TOML scene file takes the same keys")
+{
+    const fs::path dir = scratch_directory("run");
+    const Outcome run = run_softgrain("run core.harmonic --quiet --set dt=0.002 --set periods=5 --out " + dir.string());
+    REQUIRE(run.exit_code == 0);
+    CHECK(run.output.empty()); // --quiet
+    const auto summary = nlohmann::json::parse(std::ifstream(dir / "core.harmonic" / "summary.json"));
+    for (const char* key : {"period", "period_theory", "energy_error_max", "parameters", "software_version",
+                            "wall_time_s", "time_per_step_s", "peak_memory_mib"})
+        CHECK(summary.contains(key));
+    CHECK(summary["parameters"]["dt"] == 0.002);
+    std::ifstream table(dir / "core.harmonic" / "trajectory.dat");
+    std::string line, header;
+    while (std::getline(table, line) && line.rfind('#', 0) == 0) CHECK(!line.empty());
+    header = line;
+    CHECK(header == "t x v energy_error");
+
+    write_file(dir / "slow.toml", "scene = \"core.harmonic\"\ndt = 0.004\nperiods = 3\nstiffness = 25\n");
+    const Outcome file_run = run_softgrain("run " + (dir / "slow.toml").string() + " --quiet --out " + dir.string());
+    REQUIRE(file_run.exit_code == 0);
+    const auto file_summary = nlohmann::json::parse(std::ifstream(dir / "slow" / "summary.json"));
+    CHECK(file_summary["parameters"]["stiffness"] == 25.0);
+    CHECK(file_summary["parameters"]["dt"] == 0.004);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a time step above the stability limit exits with code 3, names the limit and leaves no output")
+{
+    const fs::path dir = scratch_directory("unstable");
+    const Outcome run = run_softgrain("run core.harmonic --set dt=0.3 --out " + dir.string()); // dt_c = 0.2 s
+    CHECK(run.exit_code == 3);
+    CHECK(contains(run.output, "stability limit"));
+    CHECK(contains(run.output, "at step"));
+    CHECK(fs::is_empty(dir)); // neither the scene directory nor a partial one
+    fs::remove_all(dir);
+}

@@ -1,0 +1,73 @@
+// Typed scene parameters: parsing, ranges, infinity, choices; nothing is clamped.
+#include "core/errors.hpp"
+#include "core/parameters.hpp"
+#include "support/tolerance.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+using namespace softgrain;
+
+namespace {
+
+Parameters example()
+{
+    return Parameters({
+        ParameterSpec::real("eta", 0.0, "1", "core-to-shell stiffness ratio").non_negative().infinity_allowed(),
+        ParameterSpec::real("nu", 0.3, "1", "Poisson ratio").at_least(-1.0).below(0.5),
+        ParameterSpec::integer("nodes", 64, "1", "vertices").at_least(3),
+        ParameterSpec::boolean("unload", true, "unload after loading"),
+        ParameterSpec::choice("support", "cantilever", {"cantilever", "simple"}, "beam support"),
+    });
+}
+
+} // namespace
+
+TEST_CASE("parameters parse by type and keep their defaults")
+{
+    Parameters p = example();
+    CHECK(p.real("nu") == 0.3);
+    p.set_from_text("eta", "inf");
+    CHECK(std::isinf(p.real("eta")));
+    p.set_from_text("nodes", "12");
+    CHECK(p.integer("nodes") == 12);
+    p.set_from_text("unload", "false");
+    CHECK_FALSE(p.boolean("unload"));
+    p.set_from_text("support", "simple");
+    CHECK(p.choice("support") == "simple");
+    CHECK(p.to_json()["eta"] == "inf");
+}
+
+TEST_CASE("out-of-range, malformed and unknown values are refused, never clamped")
+{
+    Parameters p = example();
+    CHECK_THROWS_AS(p.set_from_text("nu", "0.5"), InputError);    // exclusive upper bound
+    CHECK_THROWS_AS(p.set_from_text("nu", "0.3x"), InputError);   // trailing garbage
+    CHECK_THROWS_AS(p.set_from_text("nu", ""), InputError);       // empty
+    CHECK_THROWS_AS(p.set_from_text("nu", "inf"), InputError);    // inf only where allowed
+    CHECK_THROWS_AS(p.set_from_text("nodes", "2"), InputError);   // below minimum
+    CHECK_THROWS_AS(p.set_from_text("nodes", "12.5"), InputError);
+    CHECK_THROWS_AS(p.set_from_text("unload", "yes"), InputError);
+    CHECK_THROWS_AS(p.set_from_text("support", "fixed"), InputError);
+    CHECK_THROWS_AS(p.set_from_text("colour", "red"), InputError);
+    CHECK(p.real("nu") == 0.3); // the refused values changed nothing
+    CHECK(p.integer("nodes") == 64);
+    try {
+        p.set_from_text("nu", "0.7");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()) == "parameter 'nu' = '0.7' is out of range; allowed: a real number >= -1 and < 0.5 [1]");
+    }
+}
+
+TEST_CASE("TOML values: integers are accepted for reals, not the reverse; inf is a TOML literal")
+{
+    Parameters p = example();
+    p.set_from_toml(toml::parse("eta = inf\nnu = 0\nnodes = 8\nsupport = 'simple'\n"), "test.toml");
+    CHECK(std::isinf(p.real("eta")));
+    CHECK(p.real("nu") == 0.0);
+    CHECK(p.integer("nodes") == 8);
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("nodes = 8.0\n"), "test.toml"), InputError);
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("nu = inf\n"), "test.toml"), InputError);
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("unload = 1\n"), "test.toml"), InputError);
+}
