@@ -1,0 +1,39 @@
+# softgrain: the two commands are `make reproduce-figures` and `make verify` (see README.md).
+BUILD  ?= build
+SCALE  ?= default
+JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+
+.PHONY: all deps configure build verify verify-fast reproduce-figures bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Every verification law and every reproduction at smoke scale, through ctest; ends with 'N passed, N failed'.
+verify: build
+	@scripts/run-verification $(BUILD) $(JOBS)
+
+# The quick loop while developing: everything not labelled slow.
+verify-fast: build
+	@scripts/run-verification $(BUILD) $(JOBS) -LE slow
+
+# Every figure of every paper (SCALE=smoke|default|paper), then figures/index.html. Figures run in parallel
+# under make -j.
+reproduce-figures: build
+	@$(MAKE) --no-print-directory -f scripts/figures.mk SCALE=$(SCALE) SOFTGRAIN=$(BUILD)/softgrain
+
+bench: build
+	@scripts/bench $(BUILD)/softgrain
+
+clean:
+	rm -rf $(BUILD) out figures
