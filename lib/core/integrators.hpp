@@ -2,7 +2,7 @@
 //
 // `inverse_mass` holds 1/m per degree of freedom. `compute_force(x, v, f)` overwrites f with the force
 // at positions x (velocities v are passed for velocity-dependent forces such as viscous damping; in
-// velocity Verlet they are the half-step velocities).
+// velocity Verlet they are the half-step velocities, so a damping force makes the scheme first order in dt).
 #pragma once
 
 #include <Eigen/Core>

@@ -103,6 +103,7 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
     }
 
     pairs_.clear();
+    distance_evaluations_ = 0;
     const double reach_squared = reach * reach;
     std::vector<int> visited;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -119,9 +120,12 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
             // With fewer than three cells along a periodic side, two offsets can name the same cell.
             if (std::find(visited.begin(), visited.end(), f) != visited.end()) continue;
             visited.push_back(f);
-            for (int j = head[f]; j >= 0; j = next[j])
-                if (j > i && separation(positions.col(i), positions.col(j)).squaredNorm() < reach_squared)
+            for (int j = head[f]; j >= 0; j = next[j]) {
+                if (j <= i) continue;
+                ++distance_evaluations_;
+                if (separation(positions.col(i), positions.col(j)).squaredNorm() < reach_squared)
                     pairs_.emplace_back(static_cast<int>(i), j);
+            }
         }
     }
     std::sort(pairs_.begin(), pairs_.end()); // deterministic order, independent of binning

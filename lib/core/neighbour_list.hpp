@@ -25,6 +25,8 @@ public:
     bool update(const Points<Dim>& positions);
     const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
     int builds() const { return builds_; }
+    // Distance evaluations of the last build: the cost measure of a rebuild, O(N) at fixed density.
+    long distance_evaluations() const { return distance_evaluations_; }
 
     // x_j - x_i, by the minimum image in a periodic box.
     Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const;
@@ -38,6 +40,7 @@ private:
     Points<Dim> reference_positions_;
     std::vector<std::pair<int, int>> pairs_;
     int builds_ = 0;
+    long distance_evaluations_ = 0;
 };
 
 extern template class NeighbourList<2>;

@@ -1,4 +1,4 @@
-// Leapfrog order of accuracy and viscous damping against the damped-oscillator solution.
+// Viscous damping in leapfrog and velocity Verlet against the damped-oscillator solution: the order.
 #include "core/integrators.hpp"
 #include "support/tolerance.hpp"
 
@@ -54,28 +54,27 @@ double fitted_order(Step&& step, bool leapfrog)
 
 } // namespace
 
-TEST_CASE("leapfrog with viscous damping converges at second order to the damped-oscillator solution")
+TEST_CASE("leapfrog with viscous damping is first order: the damping velocity lags by dt/2 [damped oscillator]")
 {
-    // The damping force uses v(t - dt/2), lagging by half a step: the damped leapfrog is first order.
-    // Without damping it is second order (checked through velocity Verlet in harmonic.cpp). We assert the
-    // order we can justify: >= 0.9 with damping lagging by dt/2 (the leading error is (c/2m) dt).
+    // The damping force uses v(t - dt/2) instead of v(t): a local error c dt/2 |v| dt per step, so the global
+    // error is O(dt). (Without damping the scheme is second order: harmonic.cpp.) Measured 1.02; the band
+    // +-0.1 covers the O(dt^2) contamination at the coarsest dt = 0.02 = T/16.
     const double order = fitted_order(
         [](auto& x, auto& v, auto& f, const auto& im, double dt, auto&& force) { leapfrog_step(x, v, f, im, dt, force); },
         true);
     INFO("fitted order " << order);
-    CHECK(order > 0.9);
-    CHECK(order < 2.2);
+    CHECK(std::abs(order - 1.0) < 0.1);
 }
 
-TEST_CASE("velocity Verlet with viscous damping converges to the damped-oscillator solution (order >= 0.9)")
+TEST_CASE("velocity Verlet with viscous damping is first order: the half-step velocity lags by dt/2")
 {
-    // In velocity Verlet the damping uses the half-step velocity v + dt/2 a, which lags by dt/2 as well.
+    // compute_force sees v(t) + dt/2 a(t), the velocity of t + dt/2, for the force at t + dt: the same lag
+    // as leapfrog, hence first order (measured 1.02).
     const double order = fitted_order(
         [](auto& x, auto& v, auto& f, const auto& im, double dt, auto&& force) {
             velocity_verlet_step(x, v, f, im, dt, force);
         },
         false);
     INFO("fitted order " << order);
-    CHECK(order > 0.9);
-    CHECK(order < 2.2);
+    CHECK(std::abs(order - 1.0) < 0.1);
 }

@@ -6,6 +6,7 @@
 #include <set>
 
 using namespace softgrain;
+using softgrain::verification::Tolerance;
 
 namespace {
 
@@ -74,4 +75,20 @@ TEST_CASE("periodic box with fewer than three cells per side lists each pair onc
     const std::set<std::pair<int, int>> listed(list.pairs().begin(), list.pairs().end());
     CHECK(listed.size() == list.pairs().size());
     CHECK(listed == brute_force_pairs(list, x, 1.2));
+}
+
+TEST_CASE("a rebuild costs O(N): distance evaluations per point do not grow with N at fixed density")
+{
+    // Periodic boxes of side 10 and 40 with 5 points per unit area; reach 1.25 divides both sides, so both
+    // grids have cells of the same size and the expected evaluations per point are equal (9 cells x 7.8
+    // points / 2). Brute force would grow 16-fold. Tolerance 5%: the count over N = 500 points fluctuates by
+    // ~1% (Poisson statistics of ~17,000 evaluations).
+    const auto evaluations_per_point = [](double side) {
+        Rng rng(11);
+        const int n = static_cast<int>(5.0 * side * side);
+        NeighbourList<2> list(1.0, 0.25, Vec2(side, side));
+        list.update(random_points<2>(rng, n, side));
+        return static_cast<double>(list.distance_evaluations()) / n;
+    };
+    CHECK_CLOSE(evaluations_per_point(40.0), evaluations_per_point(10.0), (Tolerance{0.05, 0}));
 }
