@@ -1,4 +1,7 @@
 // softgrain: list | describe <scene> | run <scene|file.toml> [--set key=value]... [--out DIR] [--quiet]
 #include "core/cli.hpp"
 
-int main(int argc, char** argv) { return softgrain::run_command_line(argc, argv, softgrain::all_scenes()); }
+int main(int argc, char** argv)
+{
+    return softgrain::run_command_line(argc, argv, softgrain::all_scenes());
+}

@@ -19,15 +19,18 @@ namespace {
 void list_scenes(const SceneRegistry& scenes)
 {
     std::size_t width = 0;
-    for (const auto& scene : scenes.all()) width = std::max(width, scene.name.size());
     for (const auto& scene : scenes.all())
-        std::cout << std::left << std::setw(static_cast<int>(width) + 2) << scene.name << scene.description << "\n";
+        width = std::max(width, scene.name.size());
+    for (const auto& scene : scenes.all())
+        std::cout << std::left << std::setw(static_cast<int>(width) + 2) << scene.name << scene.description
+                  << "\n";
 }
 
 void describe_scene(const Scene& scene)
 {
     std::cout << scene.name << ": " << scene.description << "\n\n";
-    std::cout << std::left << std::setw(18) << "parameter" << std::setw(14) << "default" << std::setw(10) << "unit"
+    std::cout << std::left << std::setw(18) << "parameter" << std::setw(14) << "default" << std::setw(10)
+              << "unit"
               << "meaning (allowed)\n";
     for (const auto& p : scene.parameters)
         std::cout << std::left << std::setw(18) << p.name << std::setw(14) << to_string(p.default_value)
@@ -35,7 +38,8 @@ void describe_scene(const Scene& scene)
 }
 
 // A scene to run: a registered name, or a TOML file naming its base scene with `scene = "..."`.
-struct RunRequest {
+struct RunRequest
+{
     const Scene* scene = nullptr;
     std::string output_name;
     Parameters parameters{{}};
@@ -59,7 +63,8 @@ RunRequest resolve_scene(const std::string& target, const SceneRegistry& scenes)
     }
     const auto base = table["scene"].value<std::string>();
     if (!base)
-        throw InputError("scene file '" + target + "': key 'scene' is missing or not a string; allowed: the name "
+        throw InputError("scene file '" + target +
+                         "': key 'scene' is missing or not a string; allowed: the name "
                          "of a scene from 'softgrain list', e.g. scene = \"core.harmonic\"");
     const Scene& scene = scenes.find(*base);
     RunRequest request{&scene, fs::path(target).stem().string(), Parameters(scene.parameters)};
@@ -77,8 +82,8 @@ void apply_overrides(Parameters& parameters, const std::vector<std::string>& ass
     }
 }
 
-int run_scene(const std::string& target, const std::vector<std::string>& assignments, const std::string& out_dir,
-              bool quiet, const SceneRegistry& scenes)
+int run_scene(const std::string& target, const std::vector<std::string>& assignments,
+              const std::string& out_dir, bool quiet, const SceneRegistry& scenes)
 {
     RunRequest request = resolve_scene(target, scenes);
     apply_overrides(request.parameters, assignments);
@@ -97,7 +102,8 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     app.require_subcommand(1);
     app.set_version_flag("--version", software_version());
 
-    auto* list = app.add_subcommand("list", "every named scene, one per line: name, then a one-line description");
+    auto* list =
+        app.add_subcommand("list", "every named scene, one per line: name, then a one-line description");
 
     std::string describe_name;
     auto* describe = app.add_subcommand("describe", "a scene's parameters: name, default, unit, meaning");
@@ -120,9 +126,12 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     }
 
     try {
-        if (*list) list_scenes(scenes);
-        else if (*describe) describe_scene(scenes.find(describe_name));
-        else if (*run) return run_scene(run_target, assignments, out_dir, quiet, scenes);
+        if (*list)
+            list_scenes(scenes);
+        else if (*describe)
+            describe_scene(scenes.find(describe_name));
+        else if (*run)
+            return run_scene(run_target, assignments, out_dir, quiet, scenes);
         return exit_success;
     } catch (const InputError& e) {
         std::cerr << "softgrain: bad input: " << e.what() << "\n";

@@ -11,11 +11,13 @@
 
 namespace softgrain {
 
-struct InputError : std::runtime_error {
+struct InputError : std::runtime_error
+{
     using std::runtime_error::runtime_error;
 };
 
-struct NumericalError : std::runtime_error {
+struct NumericalError : std::runtime_error
+{
     NumericalError(const std::string& what_failed, std::int64_t at_step, const std::string& likely_cause)
         : std::runtime_error("numerical failure: " + what_failed + " at step " + std::to_string(at_step) +
                              "; likely cause: " + likely_cause),

@@ -5,7 +5,8 @@
 
 namespace softgrain {
 
-FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force, const FireOptions& options)
+FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force,
+                         const FireOptions& options)
 {
     const double dofs = static_cast<double>(std::max<Eigen::Index>(1, x.size()));
     Eigen::VectorXd v = Eigen::VectorXd::Zero(x.size());

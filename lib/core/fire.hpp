@@ -15,7 +15,8 @@
 
 namespace softgrain {
 
-struct FireOptions {
+struct FireOptions
+{
     double dt_initial = 1e-2;
     double dt_max = 1e-1;
     double force_tolerance = 1e-10;   // [force]
@@ -28,7 +29,8 @@ struct FireOptions {
     double f_alpha = 0.99;
 };
 
-struct FireResult {
+struct FireResult
+{
     bool converged = false;
     long iterations = 0;
     double energy = 0;
@@ -38,6 +40,7 @@ struct FireResult {
 // energy_and_force(x, f) returns U(x) and writes f = -grad U(x).
 using EnergyAndForce = std::function<double(const Eigen::VectorXd&, Eigen::VectorXd&)>;
 
-FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force, const FireOptions& options);
+FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force,
+                         const FireOptions& options);
 
 } // namespace softgrain

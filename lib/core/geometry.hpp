@@ -32,7 +32,8 @@ typename Derived::Scalar polygon_perimeter(const Eigen::MatrixBase<Derived>& ver
     using Scalar = typename Derived::Scalar;
     const Eigen::Index n = vertices.cols();
     Scalar perimeter(0);
-    for (Eigen::Index i = 0; i < n; ++i) perimeter += (vertices.col((i + 1) % n) - vertices.col(i)).norm();
+    for (Eigen::Index i = 0; i < n; ++i)
+        perimeter += (vertices.col((i + 1) % n) - vertices.col(i)).norm();
     return perimeter;
 }
 
@@ -61,10 +62,12 @@ enum class SegmentBranch {
     end_b     // a > l:       the closest point is B
 };
 
-struct SegmentProximity {
-    double a = 0;       // signed projection AC.AB/|AB| of C on the segment axis, measured from A [length]
-    double length = 0;  // l = |AB| [length]
-    double distance = 0; // |C - closest point| [length]; the overlap of sphero-objects is distance - (r_i + r_j)
+struct SegmentProximity
+{
+    double a = 0;      // signed projection AC.AB/|AB| of C on the segment axis, measured from A [length]
+    double length = 0; // l = |AB| [length]
+    double distance =
+        0; // |C - closest point| [length]; the overlap of sphero-objects is distance - (r_i + r_j)
     Vec2 closest = Vec2::Zero(); // closest point of the segment
     Vec2 normal = Vec2::Zero();  // unit vector from the closest point towards C; where C lies on the segment,
                                  // the left-hand normal of AB

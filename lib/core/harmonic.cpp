@@ -10,9 +10,18 @@
 
 namespace softgrain {
 
-double HarmonicOscillator::angular_frequency() const { return std::sqrt(stiffness / mass); }
-double HarmonicOscillator::period() const { return 2.0 * std::numbers::pi / angular_frequency(); }
-double HarmonicOscillator::critical_time_step() const { return 2.0 / angular_frequency(); }
+double HarmonicOscillator::angular_frequency() const
+{
+    return std::sqrt(stiffness / mass);
+}
+double HarmonicOscillator::period() const
+{
+    return 2.0 * std::numbers::pi / angular_frequency();
+}
+double HarmonicOscillator::critical_time_step() const
+{
+    return 2.0 / angular_frequency();
+}
 
 double verlet_period(const HarmonicOscillator& oscillator, double dt)
 {
@@ -33,10 +42,12 @@ std::string instability_cause(const HarmonicOscillator& oscillator, double dt)
     std::ostringstream cause;
     const double dt_c = oscillator.critical_time_step();
     if (dt >= dt_c)
-        cause << "time step dt = " << dt << " s is at or above the stability limit of velocity Verlet, dt_c = "
+        cause << "time step dt = " << dt
+              << " s is at or above the stability limit of velocity Verlet, dt_c = "
               << "2 sqrt(m/k) = " << dt_c << " s (dt/dt_c = " << dt / dt_c << "); choose dt < dt_c";
     else
-        cause << "energy growth below the stability limit (dt/dt_c = " << dt / dt_c << "): a defect, please report";
+        cause << "energy growth below the stability limit (dt/dt_c = " << dt / dt_c
+              << "): a defect, please report";
     return cause.str();
 }
 

@@ -13,19 +13,21 @@
 
 namespace softgrain {
 
-struct HarmonicOscillator {
+struct HarmonicOscillator
+{
     double mass;      // [kg]
     double stiffness; // [N/m]
 
-    double angular_frequency() const;   // omega = sqrt(k/m) [rad/s]
-    double period() const;              // T = 2 pi / omega [s]
-    double critical_time_step() const;  // dt_c = 2/omega [s], the stability limit of velocity Verlet
+    double angular_frequency() const;  // omega = sqrt(k/m) [rad/s]
+    double period() const;             // T = 2 pi / omega [s]
+    double critical_time_step() const; // dt_c = 2/omega [s], the stability limit of velocity Verlet
 };
 
-double verlet_period(const HarmonicOscillator& oscillator, double dt);            // T~ [s]
+double verlet_period(const HarmonicOscillator& oscillator, double dt);             // T~ [s]
 double verlet_energy_error_bound(const HarmonicOscillator& oscillator, double dt); // q = (dt/dt_c)^2 [1]
 
-struct HarmonicRun {
+struct HarmonicRun
+{
     double period = 0;           // mean spacing of upward zero crossings of x, linearly interpolated [s]
     double energy_error_max = 0; // max over all steps of |E/E0 - 1| [1]
     long steps = 0;

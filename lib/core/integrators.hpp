@@ -24,8 +24,8 @@ void velocity_verlet_step(Eigen::VectorXd& x, Eigen::VectorXd& v, Eigen::VectorX
 // Leapfrog: v holds v(t - dt/2) on entry, v(t + dt/2) on return; x goes from t to t + dt.
 // compute_force(x, v, f) is evaluated at x(t).
 template <class ForceFn>
-void leapfrog_step(Eigen::VectorXd& x, Eigen::VectorXd& v, Eigen::VectorXd& f, const Eigen::VectorXd& inverse_mass,
-                   double dt, ForceFn&& compute_force)
+void leapfrog_step(Eigen::VectorXd& x, Eigen::VectorXd& v, Eigen::VectorXd& f,
+                   const Eigen::VectorXd& inverse_mass, double dt, ForceFn&& compute_force)
 {
     compute_force(x, v, f);
     v.array() += dt * inverse_mass.array() * f.array();

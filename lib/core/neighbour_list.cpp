@@ -10,7 +10,8 @@ template <int Dim>
 NeighbourList<Dim>::NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box)
     : cutoff_(cutoff), skin_(skin), box_(periodic_box)
 {
-    if (!(cutoff > 0) || !(skin >= 0)) throw std::invalid_argument("NeighbourList: need cutoff > 0, skin >= 0");
+    if (!(cutoff > 0) || !(skin >= 0))
+        throw std::invalid_argument("NeighbourList: need cutoff > 0, skin >= 0");
 }
 
 template <int Dim>
@@ -18,7 +19,8 @@ Vec<Dim> NeighbourList<Dim>::separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j
 {
     Vec<Dim> d = x_j - x_i;
     if (box_)
-        for (int k = 0; k < Dim; ++k) d[k] -= (*box_)[k] * std::round(d[k] / (*box_)[k]);
+        for (int k = 0; k < Dim; ++k)
+            d[k] -= (*box_)[k] * std::round(d[k] / (*box_)[k]);
     return d;
 }
 
@@ -28,7 +30,8 @@ bool NeighbourList<Dim>::needs_rebuild(const Points<Dim>& positions) const
     if (builds_ == 0 || positions.cols() != reference_positions_.cols()) return true;
     const double limit_squared = 0.25 * skin_ * skin_;
     for (Eigen::Index i = 0; i < positions.cols(); ++i)
-        if (separation(reference_positions_.col(i), positions.col(i)).squaredNorm() > limit_squared) return true;
+        if (separation(reference_positions_.col(i), positions.col(i)).squaredNorm() > limit_squared)
+            return true;
     return false;
 }
 
@@ -69,13 +72,15 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
         for (int k = 0; k < Dim; ++k) {
             double u = (x[k] - origin[k]) / side[k];
             if (box_) u -= cells[k] * std::floor(u / cells[k]);
-            c[k] = std::clamp(static_cast<int>(std::floor(u)), 0, cells[k] - 1); // guards round-off at the edge
+            c[k] =
+                std::clamp(static_cast<int>(std::floor(u)), 0, cells[k] - 1); // guards round-off at the edge
         }
         return c;
     };
     const auto flat = [&](const Eigen::Matrix<int, Dim, 1>& c) {
         int index = 0;
-        for (int k = Dim - 1; k >= 0; --k) index = index * cells[k] + c[k];
+        for (int k = Dim - 1; k >= 0; --k)
+            index = index * cells[k] + c[k];
         return index;
     };
 
@@ -112,8 +117,10 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
             Eigen::Matrix<int, Dim, 1> c = cell_index[i] + o;
             bool outside = false;
             for (int k = 0; k < Dim; ++k) {
-                if (box_) c[k] = (c[k] + cells[k]) % cells[k];
-                else outside = outside || c[k] < 0 || c[k] >= cells[k];
+                if (box_)
+                    c[k] = (c[k] + cells[k]) % cells[k];
+                else
+                    outside = outside || c[k] < 0 || c[k] >= cells[k];
             }
             if (outside) continue;
             const int f = flat(c);

@@ -15,8 +15,9 @@
 namespace softgrain {
 
 template <int Dim>
-class NeighbourList {
-public:
+class NeighbourList
+{
+  public:
     // `periodic_box`: side lengths of a periodic box with its corner at the origin (minimum image);
     // absent for open boundaries.
     NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box = std::nullopt);
@@ -31,7 +32,7 @@ public:
     // x_j - x_i, by the minimum image in a periodic box.
     Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const;
 
-private:
+  private:
     void build(const Points<Dim>& positions);
     bool needs_rebuild(const Points<Dim>& positions) const;
 

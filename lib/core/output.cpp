@@ -17,7 +17,10 @@ namespace softgrain {
 
 namespace fs = std::filesystem;
 
-std::string software_version() { return SOFTGRAIN_VERSION; }
+std::string software_version()
+{
+    return SOFTGRAIN_VERSION;
+}
 
 namespace {
 
@@ -32,9 +35,12 @@ std::string format_duration(double seconds)
 {
     std::ostringstream out;
     const auto s = static_cast<long long>(seconds + 0.5);
-    if (s >= 3600) out << s / 3600 << "h" << std::setw(2) << std::setfill('0') << (s % 3600) / 60 << "m";
-    else if (s >= 60) out << s / 60 << "m" << std::setw(2) << std::setfill('0') << s % 60 << "s";
-    else out << s << "s";
+    if (s >= 3600)
+        out << s / 3600 << "h" << std::setw(2) << std::setfill('0') << (s % 3600) / 60 << "m";
+    else if (s >= 60)
+        out << s / 60 << "m" << std::setw(2) << std::setfill('0') << s % 60 << "s";
+    else
+        out << s << "s";
     return out.str();
 }
 
@@ -45,8 +51,10 @@ Table::Table(const fs::path& path, const std::vector<Column>& columns, const std
 {
     if (!stream_) throw std::runtime_error("cannot write " + path.string());
     stream_ << preamble;
-    for (const auto& c : columns) stream_ << "# column " << c.name << " [" << c.unit << "]: " << c.description << "\n";
-    for (std::size_t i = 0; i < columns.size(); ++i) stream_ << (i ? " " : "") << columns[i].name;
+    for (const auto& c : columns)
+        stream_ << "# column " << c.name << " [" << c.unit << "]: " << c.description << "\n";
+    for (std::size_t i = 0; i < columns.size(); ++i)
+        stream_ << (i ? " " : "") << columns[i].name;
     stream_ << "\n" << std::setprecision(12);
 }
 
@@ -55,7 +63,8 @@ void Table::row(const std::vector<double>& values)
     if (values.size() != width_)
         throw std::logic_error("table row has " + std::to_string(values.size()) + " values for " +
                                std::to_string(width_) + " columns");
-    for (std::size_t i = 0; i < values.size(); ++i) stream_ << (i ? " " : "") << values[i];
+    for (std::size_t i = 0; i < values.size(); ++i)
+        stream_ << (i ? " " : "") << values[i];
     stream_ << "\n";
 }
 
@@ -91,7 +100,8 @@ void Progress::finish()
     printed_ = false;
 }
 
-RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Parameters& parameters, bool quiet)
+RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Parameters& parameters,
+                       bool quiet)
     : final_dir_(out_dir / scene_name),
       partial_dir_(out_dir / ("." + scene_name + ".partial-" + std::to_string(getpid()))),
       scene_name_(std::move(scene_name)), parameters_json_(parameters.to_json()), quiet_(quiet),
@@ -122,14 +132,16 @@ Table& RunContext::table(const std::string& file_name, const std::vector<Column>
 
 fs::path RunContext::commit()
 {
-    for (auto& table : tables_) table->close();
+    for (auto& table : tables_)
+        table->close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     summary_["scene"] = scene_name_;
     summary_["parameters"] = parameters_json_;
     summary_["software_version"] = software_version();
     summary_["wall_time_s"] = wall;
     summary_["steps"] = steps_;
-    summary_["time_per_step_s"] = steps_ > 0 ? nlohmann::json(wall / static_cast<double>(steps_)) : nlohmann::json();
+    summary_["time_per_step_s"] =
+        steps_ > 0 ? nlohmann::json(wall / static_cast<double>(steps_)) : nlohmann::json();
     summary_["peak_memory_mib"] = peak_memory_mib();
     {
         std::ofstream out(partial_dir_ / "summary.json");

@@ -24,40 +24,44 @@ namespace softgrain {
 
 std::string software_version();
 
-struct Column {
+struct Column
+{
     std::string name;        // a gnuplot-friendly identifier, e.g. "dt_over_dtc"
     std::string unit;        // "1" for dimensionless
     std::string description; // meaning, with the paper's symbol or equation where there is one
 };
 
-class Table {
-public:
+class Table
+{
+  public:
     Table(const std::filesystem::path& path, const std::vector<Column>& columns, const std::string& preamble);
     void row(const std::vector<double>& values); // one value per column, in order
     void close();
 
-private:
+  private:
     std::ofstream stream_;
     std::size_t width_;
 };
 
 // Progress on stderr (percent, elapsed, estimated remaining) for long runs; silent when quiet or when
 // stderr is not a terminal. Prints at most twice a second.
-class Progress {
-public:
+class Progress
+{
+  public:
     Progress(std::string label, bool enabled);
     void update(double fraction_done);
     void finish();
 
-private:
+  private:
     std::string label_;
     bool enabled_;
     std::chrono::steady_clock::time_point start_, last_print_;
     bool printed_ = false;
 };
 
-class RunContext {
-public:
+class RunContext
+{
+  public:
     RunContext(const std::filesystem::path& out_dir, std::string scene_name, const Parameters& parameters,
                bool quiet);
     ~RunContext(); // removes the partial directory if the run did not commit
@@ -78,7 +82,7 @@ public:
     // tables and moves the directory into place. Returns the final directory.
     std::filesystem::path commit();
 
-private:
+  private:
     std::filesystem::path final_dir_, partial_dir_;
     std::string scene_name_;
     nlohmann::json parameters_json_;

@@ -25,21 +25,23 @@ std::string format_number(double x)
 std::string join(const std::vector<std::string>& words, const std::string& separator)
 {
     std::string joined;
-    for (const auto& word : words) joined += (joined.empty() ? "" : separator) + word;
+    for (const auto& word : words)
+        joined += (joined.empty() ? "" : separator) + word;
     return joined;
 }
 
 [[noreturn]] void refuse(const ParameterSpec& spec, const std::string& shown_value, const std::string& why)
 {
-    throw InputError("parameter '" + spec.name + "' = '" + shown_value + "' " + why + "; allowed: " +
-                     spec.allowed());
+    throw InputError("parameter '" + spec.name + "' = '" + shown_value + "' " + why +
+                     "; allowed: " + spec.allowed());
 }
 
 // Whole-string parse: "1.5x" or "" are refused, not read as 1.5 or 0.
 std::optional<double> parse_real(const std::string& text, bool accepts_infinity)
 {
     if (text == "inf" || text == "+inf" || text == "infinity")
-        return accepts_infinity ? std::optional<double>(std::numeric_limits<double>::infinity()) : std::nullopt;
+        return accepts_infinity ? std::optional<double>(std::numeric_limits<double>::infinity())
+                                : std::nullopt;
     double value = 0.0;
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, value);
@@ -79,21 +81,23 @@ ParameterSpec ParameterSpec::real(std::string name, double value, std::string un
     return make_spec(std::move(name), ParameterType::real, value, std::move(unit), std::move(description));
 }
 
-ParameterSpec ParameterSpec::integer(std::string name, long long value, std::string unit, std::string description)
+ParameterSpec ParameterSpec::integer(std::string name, long long value, std::string unit,
+                                     std::string description)
 {
     return make_spec(std::move(name), ParameterType::integer, value, std::move(unit), std::move(description));
 }
 
 ParameterSpec ParameterSpec::boolean(std::string name, bool value, std::string description)
 {
-    return make_spec(std::move(name), ParameterType::boolean, value, std::string(1, '-'), std::move(description));
+    return make_spec(std::move(name), ParameterType::boolean, value, std::string(1, '-'),
+                     std::move(description));
 }
 
 ParameterSpec ParameterSpec::choice(std::string name, std::string value, std::vector<std::string> choices,
                                     std::string description)
 {
-    ParameterSpec spec = make_spec(std::move(name), ParameterType::choice, std::move(value), std::string(1, '-'),
-                                   std::move(description));
+    ParameterSpec spec = make_spec(std::move(name), ParameterType::choice, std::move(value),
+                                   std::string(1, '-'), std::move(description));
     spec.choices = std::move(choices);
     return spec;
 }
@@ -105,7 +109,10 @@ ParameterSpec& ParameterSpec::positive()
     return *this;
 }
 
-ParameterSpec& ParameterSpec::non_negative() { return at_least(0.0); }
+ParameterSpec& ParameterSpec::non_negative()
+{
+    return at_least(0.0);
+}
 
 ParameterSpec& ParameterSpec::at_least(double lower)
 {
@@ -137,10 +144,14 @@ ParameterSpec& ParameterSpec::infinity_allowed()
 std::string ParameterSpec::type_name() const
 {
     switch (type) {
-    case ParameterType::real: return "real";
-    case ParameterType::integer: return "integer";
-    case ParameterType::boolean: return "boolean";
-    case ParameterType::choice: return "choice";
+    case ParameterType::real:
+        return "real";
+    case ParameterType::integer:
+        return "integer";
+    case ParameterType::boolean:
+        return "boolean";
+    case ParameterType::choice:
+        return "choice";
     }
     return "?";
 }
@@ -164,7 +175,8 @@ std::string ParameterSpec::allowed() const
 
 std::string to_string(const ParameterValue& value)
 {
-    struct Printer {
+    struct Printer
+    {
         std::string operator()(double x) const { return format_number(x); }
         std::string operator()(long long n) const { return std::to_string(n); }
         std::string operator()(bool b) const { return b ? "true" : "false"; }
@@ -175,7 +187,8 @@ std::string to_string(const ParameterValue& value)
 
 Parameters::Parameters(std::vector<ParameterSpec> specs) : specs_(std::move(specs))
 {
-    for (const auto& spec : specs_) values_[spec.name] = spec.default_value;
+    for (const auto& spec : specs_)
+        values_[spec.name] = spec.default_value;
 }
 
 const ParameterSpec& Parameters::spec(const std::string& name) const
@@ -183,7 +196,8 @@ const ParameterSpec& Parameters::spec(const std::string& name) const
     for (const auto& candidate : specs_)
         if (candidate.name == name) return candidate;
     std::vector<std::string> names;
-    for (const auto& candidate : specs_) names.push_back(candidate.name);
+    for (const auto& candidate : specs_)
+        names.push_back(candidate.name);
     throw InputError("unknown parameter '" + name + "'; allowed: " + join(names, ", "));
 }
 
@@ -192,11 +206,12 @@ void Parameters::assign(const ParameterSpec& spec, ParameterValue value, const s
     if (spec.type == ParameterType::choice) {
         const auto& word = std::get<std::string>(value);
         bool known = false;
-        for (const auto& allowed : spec.choices) known = known || allowed == word;
+        for (const auto& allowed : spec.choices)
+            known = known || allowed == word;
         if (!known) refuse(spec, shown_value, "is not a known choice");
     } else if (spec.type != ParameterType::boolean) {
         const double x = spec.type == ParameterType::real ? std::get<double>(value)
-                                                           : static_cast<double>(std::get<long long>(value));
+                                                          : static_cast<double>(std::get<long long>(value));
         const bool infinite_ok = std::isinf(x) && x > 0 && spec.accepts_infinity;
         const bool below_min = spec.min_inclusive ? x < spec.min : x <= spec.min;
         const bool above_max = spec.max_inclusive ? x > spec.max : x >= spec.max;
@@ -225,7 +240,9 @@ void Parameters::set_from_text(const std::string& key, const std::string& text)
         if (text != "true" && text != "false") refuse(s, text, "is not a boolean");
         assign(s, text == "true", text);
         return;
-    case ParameterType::choice: assign(s, text, text); return;
+    case ParameterType::choice:
+        assign(s, text, text);
+        return;
     }
 }
 
@@ -245,15 +262,18 @@ void Parameters::set_from_toml(const toml::table& table, const std::string& orig
         const auto wrong_type = [&] {
             std::ostringstream toml_type;
             toml_type << node.type();
-            throw InputError(origin + ": parameter '" + key + "' = '" + shown.str() + "' has the wrong type (a TOML " +
-                             toml_type.str() + "); allowed: " + s->allowed());
+            throw InputError(origin + ": parameter '" + key + "' = '" + shown.str() +
+                             "' has the wrong type (a TOML " + toml_type.str() +
+                             "); allowed: " + s->allowed());
         };
         try {
             switch (s->type) {
             case ParameterType::real: {
                 std::optional<double> x;
-                if (node.is_floating_point() || node.is_integer()) x = node.value<double>();
-                else if (node.is_string()) x = parse_real(*node.value<std::string>(), s->accepts_infinity);
+                if (node.is_floating_point() || node.is_integer())
+                    x = node.value<double>();
+                else if (node.is_string())
+                    x = parse_real(*node.value<std::string>(), s->accepts_infinity);
                 if (!x) wrong_type();
                 if (std::isinf(*x) && !s->accepts_infinity) refuse(*s, shown.str(), "is not finite");
                 assign(*s, *x, shown.str());
@@ -313,8 +333,10 @@ nlohmann::json Parameters::to_json() const
     nlohmann::json json = nlohmann::json::object();
     for (const auto& s : specs_) {
         const auto& v = values_.at(s.name);
-        if (s.type == ParameterType::real && std::isinf(std::get<double>(v))) json[s.name] = "inf";
-        else std::visit([&](const auto& x) { json[s.name] = x; }, v);
+        if (s.type == ParameterType::real && std::isinf(std::get<double>(v)))
+            json[s.name] = "inf";
+        else
+            std::visit([&](const auto& x) { json[s.name] = x; }, v);
     }
     return json;
 }

@@ -29,7 +29,8 @@ using ParameterValue = std::variant<double, long long, bool, std::string>;
 
 // The specification of one parameter. Build with the named constructors and the chainable setters:
 //   ParameterSpec::real("mass", 1.0, "kg", "mass of the oscillator").positive()
-struct ParameterSpec {
+struct ParameterSpec
+{
     std::string name;
     ParameterType type = ParameterType::real;
     ParameterValue default_value;
@@ -43,17 +44,18 @@ struct ParameterSpec {
     std::vector<std::string> choices; // choice parameters only
 
     static ParameterSpec real(std::string name, double value, std::string unit, std::string description);
-    static ParameterSpec integer(std::string name, long long value, std::string unit, std::string description);
+    static ParameterSpec integer(std::string name, long long value, std::string unit,
+                                 std::string description);
     static ParameterSpec boolean(std::string name, bool value, std::string description);
     static ParameterSpec choice(std::string name, std::string value, std::vector<std::string> choices,
                                 std::string description);
 
-    ParameterSpec& positive();                   // value > 0
-    ParameterSpec& non_negative();               // value >= 0
-    ParameterSpec& at_least(double lower);       // value >= lower
-    ParameterSpec& below(double upper);          // value < upper
-    ParameterSpec& at_most(double upper);        // value <= upper
-    ParameterSpec& infinity_allowed();           // "inf" is accepted (e.g. eta = inf: incompressible core)
+    ParameterSpec& positive();             // value > 0
+    ParameterSpec& non_negative();         // value >= 0
+    ParameterSpec& at_least(double lower); // value >= lower
+    ParameterSpec& below(double upper);    // value < upper
+    ParameterSpec& at_most(double upper);  // value <= upper
+    ParameterSpec& infinity_allowed();     // "inf" is accepted (e.g. eta = inf: incompressible core)
 
     std::string type_name() const;
     std::string allowed() const; // human-readable statement of what is allowed
@@ -62,8 +64,9 @@ struct ParameterSpec {
 std::string to_string(const ParameterValue& value);
 
 // The values of one run, checked against the scene's specifications.
-class Parameters {
-public:
+class Parameters
+{
+  public:
     explicit Parameters(std::vector<ParameterSpec> specs);
 
     // `--set key=value`: parses the text according to the parameter's type.
@@ -79,7 +82,7 @@ public:
     const std::vector<ParameterSpec>& specs() const { return specs_; }
     nlohmann::json to_json() const;
 
-private:
+  private:
     const ParameterSpec& spec(const std::string& name) const;
     void assign(const ParameterSpec& spec, ParameterValue value, const std::string& shown_value);
     const ParameterValue& value(const std::string& name, ParameterType expected) const;

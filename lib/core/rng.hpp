@@ -9,20 +9,22 @@
 
 namespace softgrain {
 
-class Rng {
-public:
+class Rng
+{
+  public:
     explicit Rng(std::uint64_t seed);
     ~Rng();
     Rng(Rng&&) noexcept;
     Rng& operator=(Rng&&) noexcept;
 
-    double uniform();                            // in [0, 1)
-    double uniform(double low, double high);     // in [low, high)
-    double normal(double standard_deviation);    // zero mean
+    double uniform();                         // in [0, 1)
+    double uniform(double low, double high);  // in [low, high)
+    double normal(double standard_deviation); // zero mean
     std::uint64_t seed() const { return seed_; }
 
-private:
-    struct Deleter {
+  private:
+    struct Deleter
+    {
         void operator()(gsl_rng* r) const;
     };
     std::unique_ptr<gsl_rng, Deleter> generator_;

@@ -18,7 +18,8 @@ const Scene& SceneRegistry::find(const std::string& name) const
     for (const auto& scene : scenes_)
         if (scene.name == name) return scene;
     std::string names;
-    for (const auto& scene : scenes_) names += (names.empty() ? "" : ", ") + scene.name;
+    for (const auto& scene : scenes_)
+        names += (names.empty() ? "" : ", ") + scene.name;
     throw InputError("unknown scene '" + name + "'; known scenes: " + names + " (or a .toml scene file)");
 }
 

@@ -15,20 +15,22 @@ namespace softgrain {
 
 class RunContext;
 
-struct Scene {
+struct Scene
+{
     std::string name;
     std::string description; // one line
     std::vector<ParameterSpec> parameters;
     std::function<void(const Parameters&, RunContext&)> run;
 };
 
-class SceneRegistry {
-public:
+class SceneRegistry
+{
+  public:
     void add(Scene scene);
     const Scene& find(const std::string& name) const; // InputError naming the known scenes if absent
     const std::vector<Scene>& all() const { return scenes_; }
 
-private:
+  private:
     std::vector<Scene> scenes_;
 };
 

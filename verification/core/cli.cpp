@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
+struct Outcome
+{
     int exit_code;
     std::string output; // stdout and stderr
 };
@@ -29,22 +30,30 @@ Outcome run_softgrain(const std::string& arguments)
     REQUIRE(pipe != nullptr);
     std::string output;
     std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) output += buffer.data();
+    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe))
+        output += buffer.data();
     const int status = pclose(pipe);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
 fs::path scratch_directory(const std::string& name)
 {
-    const fs::path dir = fs::temp_directory_path() / ("softgrain-cli-" + name + "-" + std::to_string(getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("softgrain-cli-" + name + "-" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
 }
 
-void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+void write_file(const fs::path& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
 
 } // namespace
 
@@ -58,7 +67,8 @@ TEST_CASE("softgrain list names every registered scene, and describe works for e
         CHECK(contains(list.output, scene.name + " "));
         const Outcome describe = run_softgrain("describe " + scene.name);
         CHECK(describe.exit_code == 0);
-        for (const auto& parameter : scene.parameters) CHECK(contains(describe.output, parameter.name));
+        for (const auto& parameter : scene.parameters)
+            CHECK(contains(describe.output, parameter.name));
     }
 }
 
@@ -120,7 +130,8 @@ TEST_CASE("bad input exits with code 2 and names the key, the value and what is 
 TEST_CASE("run writes summary.json and self-describing tables; a TOML scene file takes the same keys")
 {
     const fs::path dir = scratch_directory("run");
-    const Outcome run = run_softgrain("run core.harmonic --quiet --set dt=0.002 --set periods=5 --out " + dir.string());
+    const Outcome run =
+        run_softgrain("run core.harmonic --quiet --set dt=0.002 --set periods=5 --out " + dir.string());
     REQUIRE(run.exit_code == 0);
     CHECK(run.output.empty()); // --quiet
     const auto summary = nlohmann::json::parse(std::ifstream(dir / "core.harmonic" / "summary.json"));
@@ -130,12 +141,14 @@ TEST_CASE("run writes summary.json and self-describing tables; a TOML scene file
     CHECK(summary["parameters"]["dt"] == 0.002);
     std::ifstream table(dir / "core.harmonic" / "trajectory.dat");
     std::string line, header;
-    while (std::getline(table, line) && line.rfind('#', 0) == 0) CHECK(!line.empty());
+    while (std::getline(table, line) && line.rfind('#', 0) == 0)
+        CHECK(!line.empty());
     header = line;
     CHECK(header == "t x v energy_error");
 
     write_file(dir / "slow.toml", "scene = \"core.harmonic\"\ndt = 0.004\nperiods = 3\nstiffness = 25\n");
-    const Outcome file_run = run_softgrain("run " + (dir / "slow.toml").string() + " --quiet --out " + dir.string());
+    const Outcome file_run =
+        run_softgrain("run " + (dir / "slow.toml").string() + " --quiet --out " + dir.string());
     REQUIRE(file_run.exit_code == 0);
     const auto file_summary = nlohmann::json::parse(std::ifstream(dir / "slow" / "summary.json"));
     CHECK(file_summary["parameters"]["stiffness"] == 25.0);

@@ -23,7 +23,8 @@ TEST_CASE("FIRE finds the minimum of an ill-conditioned quadratic to the force t
     REQUIRE(result.converged);
     CHECK(result.force_rms < 1e-12);
     // |x_i - c_i| = |f_i| / k_i <= f_rms sqrt(n) / k_min: the stopping rule bounds the position error.
-    for (int i = 0; i < 4; ++i) CHECK_CLOSE(x[i], c[i], (Tolerance{0, 1e-12 * 2.0 / 1.0}));
+    for (int i = 0; i < 4; ++i)
+        CHECK_CLOSE(x[i], c[i], (Tolerance{0, 1e-12 * 2.0 / 1.0}));
 }
 
 TEST_CASE("FIRE reaches the minimum (1, 1) of the Rosenbrock function")

@@ -31,8 +31,10 @@ TEST_CASE("regular N-gon: area N R^2 sin(2 pi/N)/2, perimeter 2 N R sin(pi/N), c
         const auto v = regular_polygon(n, r, centre, 0.4);
         const double pi = std::numbers::pi;
         CAPTURE(n);
-        // Exact formulas evaluated in floating point: agreement to a few hundred ulps of the sum over N terms.
-        CHECK_CLOSE(polygon_signed_area(v), 0.5 * n * r * r * std::sin(2 * pi / n), (Tolerance{1e3 * round_off, 0}));
+        // Exact formulas evaluated in floating point: agreement to a few hundred ulps of the sum over N
+        // terms.
+        CHECK_CLOSE(polygon_signed_area(v), 0.5 * n * r * r * std::sin(2 * pi / n),
+                    (Tolerance{1e3 * round_off, 0}));
         CHECK_CLOSE(polygon_perimeter(v), 2.0 * n * r * std::sin(pi / n), (Tolerance{1e3 * round_off, 0}));
         const Vec2 c = polygon_centroid(v);
         CHECK_CLOSE(c.x(), centre.x(), (Tolerance{0, 1e3 * round_off}));
@@ -43,14 +45,16 @@ TEST_CASE("regular N-gon: area N R^2 sin(2 pi/N)/2, perimeter 2 N R sin(pi/N), c
     }
 }
 
-TEST_CASE("polygon area differentiates with AutoDiff: dA/dx_i = (y_{i+1} - y_{i-1})/2, dA/dy_i = (x_{i-1} - x_{i+1})/2")
+TEST_CASE("polygon area differentiates with AutoDiff: dA/dx_i = (y_{i+1} - y_{i-1})/2, dA/dy_i = (x_{i-1} - "
+          "x_{i+1})/2")
 {
     using Scalar = Eigen::AutoDiffScalar<Eigen::VectorXd>;
     const auto v = regular_polygon(6, 1.0, Vec2(0.2, 0.1), 0.3);
     const int n = static_cast<int>(v.cols());
     Eigen::Matrix<Scalar, 2, Eigen::Dynamic> ad(2, n);
     for (int i = 0; i < n; ++i)
-        for (int k = 0; k < 2; ++k) ad(k, i) = Scalar(v(k, i), 2 * n, 2 * i + k);
+        for (int k = 0; k < 2; ++k)
+            ad(k, i) = Scalar(v(k, i), 2 * n, 2 * i + k);
     const Eigen::VectorXd gradient = polygon_signed_area(ad).derivatives();
     for (int i = 0; i < n; ++i) {
         const int next = (i + 1) % n, previous = (i + n - 1) % n;

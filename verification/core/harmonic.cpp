@@ -1,6 +1,6 @@
 // core.harmonic: velocity Verlet on a linear spring against its exact discrete theory.
-#include "core/errors.hpp"
 #include "core/harmonic.hpp"
+#include "core/errors.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
@@ -18,7 +18,8 @@ const HarmonicOscillator oscillator{2.0, 50.0}; // omega = 5 rad/s, T = 1.2566 s
 
 TEST_CASE("velocity Verlet period error is second order in dt [theory: T~ = T (1 + (omega dt)^2/24)]")
 {
-    // Period error |T~ - T| over dt = dt_c/40 ... dt_c/320; the slope of log error against log dt is the order.
+    // Period error |T~ - T| over dt = dt_c/40 ... dt_c/320; the slope of log error against log dt is the
+    // order.
     std::vector<double> log_dt, log_error;
     for (double dt = 0.01; dt >= 0.00125; dt /= 2) {
         const HarmonicRun run = simulate_harmonic(oscillator, dt, 40.0);
@@ -26,8 +27,8 @@ TEST_CASE("velocity Verlet period error is second order in dt [theory: T~ = T (1
         log_error.push_back(std::log(std::abs(run.period - oscillator.period())));
     }
     double intercept, slope, cov00, cov01, cov11, sum_squares;
-    gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, log_dt.size(), &intercept, &slope, &cov00, &cov01, &cov11,
-                   &sum_squares);
+    gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, log_dt.size(), &intercept, &slope, &cov00, &cov01,
+                   &cov11, &sum_squares);
     INFO("fitted order " << slope);
     // The issue's acceptance band: 2 +- 0.1. The leading term (omega dt)^2/24 dominates the O(dt^4) term by
     // a factor > 1e3 at these dt, so the fitted slope is 2 to much better than 0.1.

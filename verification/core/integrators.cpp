@@ -23,7 +23,8 @@ double damped_position_error(double dt, Step&& step, bool leapfrog)
     x << 1.0;
     v << 0.0;
     inverse_mass << 1.0 / m;
-    const auto force = [&](const Eigen::VectorXd& position, const Eigen::VectorXd& velocity, Eigen::VectorXd& out) {
+    const auto force = [&](const Eigen::VectorXd& position, const Eigen::VectorXd& velocity,
+                           Eigen::VectorXd& out) {
         out = -k * position;
         add_viscous_damping(out, velocity, c);
     };
@@ -35,7 +36,8 @@ double damped_position_error(double dt, Step&& step, bool leapfrog)
         force(x, v, f);
     }
     const long steps = std::lround(t_end / dt);
-    for (long n = 0; n < steps; ++n) step(x, v, f, inverse_mass, dt, force);
+    for (long n = 0; n < steps; ++n)
+        step(x, v, f, inverse_mass, dt, force);
     return std::abs(x[0] - exact_x(t_end));
 }
 
@@ -48,20 +50,22 @@ double fitted_order(Step&& step, bool leapfrog)
         log_error.push_back(std::log(damped_position_error(dt, step, leapfrog)));
     }
     double intercept, slope, c00, c01, c11, ss;
-    gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, log_dt.size(), &intercept, &slope, &c00, &c01, &c11, &ss);
+    gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, log_dt.size(), &intercept, &slope, &c00, &c01, &c11,
+                   &ss);
     return slope;
 }
 
 } // namespace
 
-TEST_CASE("leapfrog with viscous damping is first order: the damping velocity lags by dt/2 [damped oscillator]")
+TEST_CASE(
+    "leapfrog with viscous damping is first order: the damping velocity lags by dt/2 [damped oscillator]")
 {
     // The damping force uses v(t - dt/2) instead of v(t): a local error c dt/2 |v| dt per step, so the global
     // error is O(dt). (Without damping the scheme is second order: harmonic.cpp.) Measured 1.02; the band
     // +-0.1 covers the O(dt^2) contamination at the coarsest dt = 0.02 = T/16.
-    const double order = fitted_order(
-        [](auto& x, auto& v, auto& f, const auto& im, double dt, auto&& force) { leapfrog_step(x, v, f, im, dt, force); },
-        true);
+    const double order = fitted_order([](auto& x, auto& v, auto& f, const auto& im, double dt,
+                                         auto&& force) { leapfrog_step(x, v, f, im, dt, force); },
+                                      true);
     INFO("fitted order " << order);
     CHECK(std::abs(order - 1.0) < 0.1);
 }
@@ -70,11 +74,9 @@ TEST_CASE("velocity Verlet with viscous damping is first order: the half-step ve
 {
     // compute_force sees v(t) + dt/2 a(t), the velocity of t + dt/2, for the force at t + dt: the same lag
     // as leapfrog, hence first order (measured 1.02).
-    const double order = fitted_order(
-        [](auto& x, auto& v, auto& f, const auto& im, double dt, auto&& force) {
-            velocity_verlet_step(x, v, f, im, dt, force);
-        },
-        false);
+    const double order = fitted_order([](auto& x, auto& v, auto& f, const auto& im, double dt,
+                                         auto&& force) { velocity_verlet_step(x, v, f, im, dt, force); },
+                                      false);
     INFO("fitted order " << order);
     CHECK(std::abs(order - 1.0) < 0.1);
 }

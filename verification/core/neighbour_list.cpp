@@ -15,13 +15,15 @@ Points<Dim> random_points(Rng& rng, int n, double side)
 {
     Points<Dim> x(Dim, n);
     for (int i = 0; i < n; ++i)
-        for (int k = 0; k < Dim; ++k) x(k, i) = rng.uniform(0.0, side);
+        for (int k = 0; k < Dim; ++k)
+            x(k, i) = rng.uniform(0.0, side);
     return x;
 }
 
 // Every pair closer than `range` by O(N^2) search.
 template <int Dim>
-std::set<std::pair<int, int>> brute_force_pairs(const NeighbourList<Dim>& list, const Points<Dim>& x, double range)
+std::set<std::pair<int, int>> brute_force_pairs(const NeighbourList<Dim>& list, const Points<Dim>& x,
+                                                double range)
 {
     std::set<std::pair<int, int>> pairs;
     for (int i = 0; i < x.cols(); ++i)
@@ -47,9 +49,11 @@ void check_against_brute_force(bool periodic)
 
     // Moves smaller than skin/2 keep the list; every pair within the cutoff is still listed.
     for (int i = 0; i < x.cols(); ++i)
-        x.col(i) += Vec<Dim>::NullaryExpr([&] { return rng.normal(1.0); }).normalized() * (0.49 * skin) * rng.uniform();
+        x.col(i) += Vec<Dim>::NullaryExpr([&] { return rng.normal(1.0); }).normalized() * (0.49 * skin) *
+                    rng.uniform();
     CHECK_FALSE(list.update(x));
-    for (const auto& pair : brute_force_pairs(list, x, cutoff)) CHECK(listed.count(pair) == 1);
+    for (const auto& pair : brute_force_pairs(list, x, cutoff))
+        CHECK(listed.count(pair) == 1);
 
     // A larger move forces a rebuild.
     x.col(0) += Vec<Dim>::Constant(skin);

@@ -1,6 +1,6 @@
 // Typed scene parameters: parsing, ranges, infinity, choices; nothing is clamped.
-#include "core/errors.hpp"
 #include "core/parameters.hpp"
+#include "core/errors.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
@@ -14,7 +14,9 @@ namespace {
 Parameters example()
 {
     return Parameters({
-        ParameterSpec::real("eta", 0.0, "1", "core-to-shell stiffness ratio").non_negative().infinity_allowed(),
+        ParameterSpec::real("eta", 0.0, "1", "core-to-shell stiffness ratio")
+            .non_negative()
+            .infinity_allowed(),
         ParameterSpec::real("nu", 0.3, "1", "Poisson ratio").at_least(-1.0).below(0.5),
         ParameterSpec::integer("nodes", 64, "1", "vertices").at_least(3),
         ParameterSpec::boolean("unload", true, "unload after loading"),
@@ -42,11 +44,11 @@ TEST_CASE("parameters parse by type and keep their defaults")
 TEST_CASE("out-of-range, malformed and unknown values are refused, never clamped")
 {
     Parameters p = example();
-    CHECK_THROWS_AS(p.set_from_text("nu", "0.5"), InputError);    // exclusive upper bound
-    CHECK_THROWS_AS(p.set_from_text("nu", "0.3x"), InputError);   // trailing garbage
-    CHECK_THROWS_AS(p.set_from_text("nu", ""), InputError);       // empty
-    CHECK_THROWS_AS(p.set_from_text("nu", "inf"), InputError);    // inf only where allowed
-    CHECK_THROWS_AS(p.set_from_text("nodes", "2"), InputError);   // below minimum
+    CHECK_THROWS_AS(p.set_from_text("nu", "0.5"), InputError);  // exclusive upper bound
+    CHECK_THROWS_AS(p.set_from_text("nu", "0.3x"), InputError); // trailing garbage
+    CHECK_THROWS_AS(p.set_from_text("nu", ""), InputError);     // empty
+    CHECK_THROWS_AS(p.set_from_text("nu", "inf"), InputError);  // inf only where allowed
+    CHECK_THROWS_AS(p.set_from_text("nodes", "2"), InputError); // below minimum
     CHECK_THROWS_AS(p.set_from_text("nodes", "12.5"), InputError);
     CHECK_THROWS_AS(p.set_from_text("unload", "yes"), InputError);
     CHECK_THROWS_AS(p.set_from_text("support", "fixed"), InputError);
@@ -56,7 +58,8 @@ TEST_CASE("out-of-range, malformed and unknown values are refused, never clamped
     try {
         p.set_from_text("nu", "0.7");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()) == "parameter 'nu' = '0.7' is out of range; allowed: a real number >= -1 and < 0.5 [1]");
+        CHECK(std::string(e.what()) ==
+              "parameter 'nu' = '0.7' is out of range; allowed: a real number >= -1 and < 0.5 [1]");
     }
 }
 

@@ -18,7 +18,8 @@ namespace softgrain::verification {
 
 inline constexpr double round_off = std::numeric_limits<double>::epsilon();
 
-struct Tolerance {
+struct Tolerance
+{
     double relative = 0;
     double absolute = 0;
 };
@@ -42,9 +43,9 @@ inline bool within(double value, double reference, Tolerance tolerance)
 } // namespace softgrain::verification
 
 // CHECK_CLOSE(value, reference, Tolerance{rel, abs}): fails with both numbers and the relative error.
-#define CHECK_CLOSE(value, reference, tolerance)                                                                \
-    do {                                                                                                        \
-        const double sg_value_ = (value), sg_reference_ = (reference);                                          \
-        INFO(::softgrain::verification::describe_comparison(sg_value_, sg_reference_, (tolerance)));            \
-        CHECK(::softgrain::verification::within(sg_value_, sg_reference_, (tolerance)));                        \
+#define CHECK_CLOSE(value, reference, tolerance)                                                             \
+    do {                                                                                                     \
+        const double sg_value_ = (value), sg_reference_ = (reference);                                       \
+        INFO(::softgrain::verification::describe_comparison(sg_value_, sg_reference_, (tolerance)));         \
+        CHECK(::softgrain::verification::within(sg_value_, sg_reference_, (tolerance)));                     \
     } while (false)
