@@ -4,7 +4,7 @@ SCALE  ?= default
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build verify verify-fast reproduce-figures bench clean
+.PHONY: all deps configure build verify verify-fast verify-sanitize reproduce-figures bench clean
 
 all: build
 
@@ -27,6 +27,12 @@ verify: build
 verify-fast: build
 	@scripts/run-verification $(BUILD) $(JOBS) -LE slow
 
+# The fast suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build directory.
+verify-sanitize: deps
+	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DSOFTGRAIN_SANITIZE=ON
+	cmake --build build-sanitize -j $(JOBS)
+	@scripts/run-verification build-sanitize $(JOBS) -LE 'slow|reproduction'
+
 # Every figure of every paper (SCALE=smoke|default|paper), then figures/index.html. Figures run in parallel
 # under make -j.
 reproduce-figures: build
@@ -36,4 +42,4 @@ bench: build
 	@scripts/bench $(BUILD)/softgrain
 
 clean:
-	rm -rf $(BUILD) out figures
+	rm -rf $(BUILD) build-sanitize out figures
