@@ -125,8 +125,10 @@ std::vector<ManySample> integrate_many(const ManyParticleSystem& system, std::ve
         samples.push_back({t, x, h, many_particle_rates(system, t, x, h)});
     };
     record();
+    steps = 0;
     for (double target : output_times) {
         const int status = gsl_odeiv2_driver_apply(driver.get(), &t, target, y.data());
+        steps += static_cast<long>(driver->n); // the driver counts the steps of each call from zero
         if (status != GSL_SUCCESS)
             throw NumericalError("many-particle integration (rk8pd): " + std::string(gsl_strerror(status)),
                                  static_cast<std::int64_t>(driver->n),
@@ -134,7 +136,6 @@ std::vector<ManySample> integrate_many(const ManyParticleSystem& system, std::ve
         record();
         if (*std::min_element(y.begin() + positions.size(), y.end()) <= h_min) break;
     }
-    steps = static_cast<long>(driver->n);
     return samples;
 }
 

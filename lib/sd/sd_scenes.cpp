@@ -203,7 +203,7 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
                    {"h_crossover", "R", "simulated h where delta = h"},
                    {"kappa_crossover_exact", "1", "alpha sqrt 2 (h/R) sqrt(h-bar/R + h/R) at h_crossover"}});
     std::vector<double> log_h, log_kappa, decades;
-    double relative_error_max = 0, kappa_vanishes = NAN;
+    double relative_error_max = 0, kappa_vanishes = NAN, kappa_last_window = NAN;
     long total_steps = 0;
     auto progress = ctx.progress("sd.phase_diagram");
     for (long long i = 0; i < count; ++i) {
@@ -222,6 +222,7 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
         const double window = ranges[1] ? ranges[1]->decades() : 0.0;
         decades.push_back(window);
         if (window == 0.0 && std::isnan(kappa_vanishes)) kappa_vanishes = kappa;
+        if (window > 0.0) kappa_last_window = kappa;
         const double hc = an.h_crossover.value_or(NAN);
         const double kc = an.h_crossover ? crossover_kappa_paper(problem.material, hc) : NAN;
         if (an.h_crossover) {
@@ -263,6 +264,8 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
     sum["poiseuille_decades_at_kappa_min"] = decades.front();
     sum["kappa_poiseuille_vanishes"] =
         std::isnan(kappa_vanishes) ? nlohmann::json(nullptr) : nlohmann::json(kappa_vanishes);
+    sum["kappa_poiseuille_last"] =
+        std::isnan(kappa_last_window) ? nlohmann::json(nullptr) : nlohmann::json(kappa_last_window);
     sum["poiseuille_window_nonincreasing"] = std::is_sorted(decades.rbegin(), decades.rend());
 }
 
