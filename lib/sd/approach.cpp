@@ -54,14 +54,17 @@ int rhs(double t, const double y[], double f[], void* params)
     return std::isfinite(f[0]) && std::isfinite(f[1]) ? GSL_SUCCESS : GSL_FAILURE;
 }
 
-// Jacobian for the implicit steppers, by central differences with steps scaled to delta and h (the
-// variables the rates depend on strongly); relative accuracy ~1e-8, ample for a Newton iteration matrix.
+// Jacobian for the implicit steppers (and jacobian_modes), by central differences. Both X and h move delta =
+// (2R + h - X)/2, and the rates vary on the scale of min(delta, h): steps 1e-6 min(delta, h), but never below
+// 1e3 eps |X|, where the round-off of delta would dominate (relative accuracy 1e-3 at worst, when delta/X ~
+// 1e-8).
 int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* params)
 {
     auto* s = static_cast<System*>(params);
     const double R = s->problem->material.radius;
     const double delta = std::abs(deflection_eq2(R, y[0], y[1]));
-    const double steps[2] = {std::max(1e-6 * delta, 1e-8 * std::abs(y[0])), 1e-6 * y[1]};
+    const double step = std::max(1e-6 * std::min(delta, y[1]), 1e3 * DBL_EPSILON * std::abs(y[0]));
+    const double steps[2] = {step, std::min(step, 0.5 * y[1])};
     double plus[2], minus[2];
     for (int j = 0; j < 2; ++j) {
         double yp[2] = {y[0], y[1]}, ym[2] = {y[0], y[1]};
@@ -173,6 +176,20 @@ double gap_rate_derivative(const ApproachProblem& p, double h, double t)
     };
     const double step = 1e-4 * h;
     return (balanced_rate(h + step) - balanced_rate(h - step)) / (2.0 * step);
+}
+
+ModeRates jacobian_modes(const ApproachProblem& p, double t, double X, double h)
+{
+    System system{&p};
+    const double y[2] = {X, h};
+    double J[4], dfdt[2];
+    if (jacobian(t, y, J, dfdt, &system) != GSL_SUCCESS)
+        throw NumericalError("Jacobian of eqs. (7), (9)", 0, "rates not finite near h = " + describe(h));
+    const double trace = J[0] + J[3], det = J[0] * J[3] - J[1] * J[2];
+    const double discriminant = trace * trace / 4 - det;
+    const double root = discriminant > 0 ? std::sqrt(discriminant) : 0.0; // complex pair: equal real parts
+    const double tau = h / std::abs(rates_at(p, t, X, h).h_dot);
+    return {(trace / 2 - root) * tau, (trace / 2 + root) * tau};
 }
 
 double approach_time_reference(const ApproachProblem& p, double h_from, double h_to)

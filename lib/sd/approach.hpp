@@ -70,6 +70,17 @@ ApproachRun integrate_approach(const ApproachProblem& problem, const IntegratorS
 // of order 2-3 (2.785 for classical RK4).
 double gap_rate_derivative(const ApproachProblem& problem, double h, double t);
 
+// The two relaxation rates of eqs. (7), (9) at a state: real parts of the eigenvalues of the 2x2 Jacobian
+// d(X-dot, h-dot)/d(X, h) (central differences), multiplied by the time scale tau = h/|h-dot| of the gap. A
+// stiff problem would show |rate| tau >> 1; for the paper's laws the measured values are -lambda2 (0 ... 3)
+// and a near-zero one (the neutral force-balance mode), see verification/sd/stiffness.cpp.
+struct ModeRates
+{
+    double fast; // the most negative real part times tau
+    double slow; // the other one times tau
+};
+ModeRates jacobian_modes(const ApproachProblem& problem, double t, double X, double h);
+
 // Reference for constant loading: the time to go from h0 to h, t(h) = int_h^h0 zeta(a(h', delta_eq(h')), h')
 // / (F_ext - F_adh) dh' (eq. 7 with eq. 1 exactly satisfied), by GSL adaptive quadrature in ln h'.
 double approach_time_reference(const ApproachProblem& problem, double h_from, double h_to);

@@ -91,35 +91,40 @@ void run_approach(const Parameters& p, RunContext& ctx)
     ctx.count_steps(run.steps);
     const ApproachAnalysis an = analyse_approach(problem, run.samples, p.real("regime_width"));
 
-    auto& table =
-        ctx.table("approach.dat",
-                  {{"t", "R/V", "time"},
-                   {"X", "R", "centre distance X"},
-                   {"h", "R", "gap h"},
-                   {"delta", "R", "deflection delta from eq. (2)"},
-                   {"a", "R", "interaction size a, eq. (5)"},
-                   {"h_dot", "V", "gap rate, eq. (7)"},
-                   {"X_dot", "V", "centre rate, eq. (9)"},
-                   {"lambda1", "1", "local exponent d ln delta/d ln h (3-point difference)"},
-                   {"lambda2", "1", "local exponent d ln|h-dot|/d ln h (3-point difference)"},
-                   {"lambda1_exact", "1", "exact exponent for eqs. (3)-(5) at (h, delta)"},
-                   {"lambda2_exact", "1", "exact exponent for eqs. (3)-(5) at (h, delta)"},
-                   {"force_balance_residual", "1", "|F_ela/F_ext - 1|, eq. (1)"},
-                   {"deflection_residual", "1", "|delta(eq. 2)/delta_eq(h) - 1|, delta_eq from eq. (1)"},
-                   {"h_error", "1", "relative error of h(t) against the quadrature t(h)"},
-                   {"width_stokes", "1", "(R/h)(3 - 2R/(R + delta))"},
-                   {"width_poiseuille", "1", "h/R + 3 delta/h"},
-                   {"width_hertz", "1", "3h/R + 4h/(3 delta)"}});
+    auto& table = ctx.table(
+        "approach.dat",
+        {{"t", "R/V", "time"},
+         {"X", "R", "centre distance X"},
+         {"h", "R", "gap h"},
+         {"delta", "R", "deflection delta from eq. (2)"},
+         {"a", "R", "interaction size a, eq. (5)"},
+         {"h_dot", "V", "gap rate, eq. (7)"},
+         {"X_dot", "V", "centre rate, eq. (9)"},
+         {"lambda1", "1", "local exponent d ln delta/d ln h (3-point difference)"},
+         {"lambda2", "1", "local exponent d ln|h-dot|/d ln h (3-point difference)"},
+         {"lambda1_exact", "1", "exact exponent for eqs. (3)-(5) at (h, delta)"},
+         {"lambda2_exact", "1", "exact exponent for eqs. (3)-(5) at (h, delta)"},
+         {"force_balance_residual", "1", "|F_ela/F_ext - 1|, eq. (1)"},
+         {"deflection_residual", "1", "|delta(eq. 2)/delta_eq(h) - 1|, delta_eq from eq. (1)"},
+         {"h_error", "1", "relative error of h(t) against the quadrature t(h)"},
+         {"width_stokes", "1", "(R/h)(3 - 2R/(R + delta))"},
+         {"width_poiseuille", "1", "h/R + 3 delta/h"},
+         {"width_hertz", "1", "3h/R + 4h/(3 delta)"},
+         {"mode_fast", "1", "most negative Re eigenvalue of d(X-dot, h-dot)/d(X, h), times h/|h-dot|"},
+         {"mode_slow", "1", "the other Re eigenvalue, times h/|h-dot|"}});
     const double R = problem.material.radius;
+    double stiffness_max = 0; // max over the samples of -Re(eigenvalue) h/|h-dot|
     for (std::size_t k = 0; k < run.samples.size(); ++k) {
         const ApproachSample& s = run.samples[k];
+        const ModeRates modes = jacobian_modes(problem, s.t, s.X, s.h);
+        stiffness_max = std::max(stiffness_max, -modes.fast);
         table.row({s.t * kappa, s.X, s.h, s.rates.delta, s.rates.a, s.rates.h_dot / kappa,
                    s.rates.X_dot / kappa, an.exponents.lambda1[k], an.exponents.lambda2[k],
                    an.lambda1_exact[k], an.lambda2_exact[k], an.force_balance_residual[k],
                    an.deflection_residual[k], an.h_error[k],
                    regime_width(Regime::stokes, R, s.h, s.rates.delta),
                    regime_width(Regime::poiseuille, R, s.h, s.rates.delta),
-                   regime_width(Regime::hertz, R, s.h, s.rates.delta)});
+                   regime_width(Regime::hertz, R, s.h, s.rates.delta), modes.fast, modes.slow});
     }
 
     auto& sum = ctx.summary();
@@ -154,6 +159,7 @@ void run_approach(const Parameters& p, RunContext& ctx)
             p.real("regime_width"))
             hertz_error = std::max(hertz_error, an.h_error[k]);
     sum["h_error_hertz"] = hertz_error >= 0 ? nlohmann::json(hertz_error) : nlohmann::json(nullptr);
+    sum["stiffness_max"] = stiffness_max;
     sum["h_final"] = last.h;
     sum["t_final"] = last.t * kappa;
     sum["delta_start"] = first.rates.delta;
