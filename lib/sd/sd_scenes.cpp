@@ -329,7 +329,7 @@ void run_many(const Parameters& p, RunContext& ctx)
     std::vector<double> times;
     const long long outputs = p.integer("outputs");
     for (long long k = 1; k <= outputs; ++k)
-        times.push_back(t_end * std::pow(1e-4, 1.0 - static_cast<double>(k) / outputs) *
+        times.push_back(t_end * std::pow(1e-7, 1.0 - static_cast<double>(k) / outputs) *
                         (k == outputs ? 1.0 + 1e-9 : 1.0));
     long steps = 0;
     const std::vector<ManySample> samples =
@@ -443,7 +443,10 @@ void register_sd_scenes(SceneRegistry& registry)
                                 "rk8pd relative (and delta-scaled absolute) tolerance")
                 .positive()
                 .below(1e-2),
-            ParameterSpec::integer("outputs", 120, "1", "log-spaced output times").at_least(4),
+            ParameterSpec::integer(
+                "outputs", 120, "1",
+                "output times, log-spaced over the 7 decades before the pair reaches h_min")
+                .at_least(4),
         },
         run_many,
     });
