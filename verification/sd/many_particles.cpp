@@ -1,0 +1,138 @@
+// SD note [20]: the many-particle system. Two particles reproduce the pair dynamics (eqs. 7, 9); a line
+// carries the same force in every bond; a symmetric triangle stays symmetric; the mean velocity is zero.
+#include "sd/approach.hpp"
+#include "sd/many.hpp"
+#include "sd/pair_dynamics.hpp"
+#include "support/tolerance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace softgrain::sd;
+using softgrain::verification::round_off;
+using softgrain::verification::Tolerance;
+
+namespace {
+const Material material;
+
+ManyParticleSystem line_system(int n, double F)
+{
+    ManyParticleSystem s{material, paper_contact_laws(material), 1, {}, {}};
+    for (int i = 0; i + 1 < n; ++i)
+        s.bonds.push_back({i, i + 1});
+    s.external = [n, F](double, std::vector<double>& force, std::vector<double>& rate) {
+        std::fill(force.begin(), force.end(), 0.0);
+        std::fill(rate.begin(), rate.end(), 0.0);
+        force[0] = F;
+        force[n - 1] = -F;
+    };
+    return s;
+}
+} // namespace
+
+TEST_CASE("two particles: relative velocity and gap rate equal the pair's X-dot (eq. 9) and h-dot (eq. 7) "
+          "[SD note 20]")
+{
+    const double F = 1e-3;
+    const ManyParticleSystem s = line_system(2, F);
+    for (double h : {10.0, 0.1, 1e-4}) {
+        CAPTURE(h);
+        const double delta = balanced_deflection(s.laws, h, F);
+        const double X = 2 + h - 2 * delta;
+        const ManyParticleRates many = many_particle_rates(s, 0.0, {0.0, X}, {h});
+        const PairRates pair = soft_dynamics_rates(s.laws, 1.0, X, h, F, 0.0);
+        // Same formulas, one linear solve: agreement to round-off of the solve (condition ~1).
+        CHECK_CLOSE(many.velocity[1] - many.velocity[0], pair.X_dot, (Tolerance{1e3 * round_off, 0.0}));
+        CHECK_CLOSE(many.gap_rate[0], pair.h_dot, (Tolerance{1e3 * round_off, 0.0}));
+        CHECK(std::abs(many.velocity[0] + many.velocity[1]) <= 1e3 * round_off * std::abs(pair.X_dot));
+        CHECK(many.residual <= 1e3 * round_off);
+    }
+}
+
+TEST_CASE("a line of 5 compressed at its ends: every gap follows the pair under the same force; mean "
+          "velocity 0 [note 20]")
+{
+    const double F = 1e-3, h0 = 1.0;
+    const ManyParticleSystem s = line_system(5, F);
+    const double delta0 = balanced_deflection(s.laws, h0, F);
+    std::vector<double> x;
+    for (int i = 0; i < 5; ++i)
+        x.push_back(i * (2 + h0 - 2 * delta0));
+    const ApproachProblem pair{material, s.laws, constant_loading(F), h0, 1e-3};
+    const double t_end = approach_time_reference(pair, h0, 1e-3);
+    long steps = 0;
+    const auto samples =
+        integrate_many(s, x, std::vector<double>(4, h0), {0.01 * t_end, 0.1 * t_end, 0.5 * t_end, t_end},
+                       1e-4, 1e-10, delta0, steps);
+    REQUIRE(samples.size() == 5);
+    for (const ManySample& m : samples) {
+        CAPTURE(m.t);
+        double mean = 0, scale = 0;
+        for (double v : m.rates.velocity)
+            mean += v / 5, scale = std::max(scale, std::abs(v));
+        CHECK(std::abs(mean) <= 1e3 * round_off * scale); // the replaced equation, to round-off
+        for (std::size_t b = 0; b < m.gaps.size(); ++b) {
+            // Every bond carries F (statics of a line) and so follows t(h) of the pair; the reference is the
+            // quadrature of eq. (7) from h0 (1e-13), the integration has rk8pd tolerance 1e-10 over ~1e2
+            // steps.
+            const double t_ref = m.gaps[b] < h0 ? approach_time_reference(pair, h0, m.gaps[b]) : 0.0;
+            CHECK(std::abs(m.rates.gap_rate[b]) * std::abs(m.t - t_ref) / m.gaps[b] <= 1e-7);
+            CHECK_CLOSE(m.rates.pair_force[b], F, (Tolerance{1e-7, 0.0}));
+        }
+    }
+}
+
+TEST_CASE("a triangle pushed to its centre stays symmetric, bonds carry F/sqrt3, zero mean velocity and "
+          "rotation [note 20]")
+{
+    const double F = 1e-2, h0 = 0.5, Fb = F / std::sqrt(3.0);
+    ManyParticleSystem s{material, paper_contact_laws(material), 2, {{0, 1}, {1, 2}, {2, 0}}, {}};
+    const double delta0 = balanced_deflection(s.laws, h0, Fb);
+    const double rho = (2 + h0 - 2 * delta0) / std::sqrt(3.0);
+    std::vector<double> x;
+    for (int i = 0; i < 3; ++i) {
+        const double angle = 0.3 + 2 * std::acos(-1.0) * i / 3; // a generic orientation
+        x.push_back(rho * std::cos(angle));
+        x.push_back(rho * std::sin(angle));
+    }
+    const std::vector<double> x0 = x;
+    s.external = [F, x0](double, std::vector<double>& force, std::vector<double>& rate) {
+        for (int i = 0; i < 3; ++i) {
+            const double r = std::hypot(x0[2 * i], x0[2 * i + 1]);
+            force[2 * i] = -F * x0[2 * i] / r;
+            force[2 * i + 1] = -F * x0[2 * i + 1] / r;
+        }
+        std::fill(rate.begin(), rate.end(), 0.0);
+    };
+    const ApproachProblem pair{material, s.laws, constant_loading(Fb), h0, 1e-3};
+    const double t_end = approach_time_reference(pair, h0, 1e-3);
+    long steps = 0;
+    const auto samples =
+        integrate_many(s, x, std::vector<double>(3, h0), {0.1 * t_end, t_end}, 1e-4, 1e-10, delta0, steps);
+    for (const ManySample& m : samples) {
+        CAPTURE(m.t);
+        const auto [lo, hi] = std::minmax_element(m.gaps.begin(), m.gaps.end());
+        CHECK((*hi - *lo) / *lo <= 1e-8); // symmetric to the solver tolerance (rk8pd, 1e-10 per step)
+        double vx = 0, vy = 0, spin = 0, scale = 0;
+        for (int i = 0; i < 3; ++i) {
+            vx += m.rates.velocity[2 * i];
+            vy += m.rates.velocity[2 * i + 1];
+            spin += m.positions[2 * i] * m.rates.velocity[2 * i + 1] -
+                    m.positions[2 * i + 1] * m.rates.velocity[2 * i];
+            scale = std::max(scale, std::hypot(m.rates.velocity[2 * i], m.rates.velocity[2 * i + 1]));
+        }
+        CHECK(std::hypot(vx, vy) <= 1e3 * round_off * scale);
+        CHECK(std::abs(spin) <= 1e3 * round_off * scale * rho);
+        // Each particle moves radially (towards the centre): velocity parallel to its position.
+        for (int i = 0; i < 3; ++i) {
+            const double cross = m.positions[2 * i] * m.rates.velocity[2 * i + 1] -
+                                 m.positions[2 * i + 1] * m.rates.velocity[2 * i];
+            CHECK(std::abs(cross) <= 1e-8 * scale * rho);
+        }
+        for (std::size_t b = 0; b < 3; ++b) {
+            CHECK_CLOSE(m.rates.pair_force[b], Fb, (Tolerance{1e-7, 0.0}));
+            const double t_ref = m.gaps[b] < h0 ? approach_time_reference(pair, h0, m.gaps[b]) : 0.0;
+            CHECK(std::abs(m.rates.gap_rate[b]) * std::abs(m.t - t_ref) / m.gaps[b] <= 1e-7);
+        }
+    }
+}
