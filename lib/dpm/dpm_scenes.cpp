@@ -2,6 +2,7 @@
 #include "dpm/dpm_scenes.hpp"
 
 #include "dpm/modes_scene.hpp"
+#include "dpm/shear_scene.hpp"
 
 namespace softgrain {
 
@@ -12,6 +13,10 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM eq. (9.28): eigenvalues of the dynamical matrix of a floppy / shell / surface-tension "
               "particle, zero modes, Delta U along each mode (Figs. 9.14a, c)",
               dpm::modes_parameters(), dpm::run_modes});
+    registry.add(Scene{"dpm.shear_friction",
+                       "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
+                       "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
+                       dpm::shear_friction_parameters(), dpm::run_shear_friction});
 }
 
 } // namespace softgrain
