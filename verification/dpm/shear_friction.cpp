@@ -12,7 +12,6 @@ using softgrain::verification::Tolerance;
 
 TEST_CASE("rough shells: max mu_eff -> ([1/(C sin(pi/N))]^2 - 1)^(-1/2) for several (C, N) [DPM eq. (9.13)]")
 {
-    const double pi = std::numbers::pi;
     const std::pair<int, double> cases[] = {{8, 1.3}, {8, 0.71}, {6, 1.0}, {10, 1.0}, {16, 0.8}};
     for (const auto& [n, c] : cases) {
         ShearTestOptions o;
