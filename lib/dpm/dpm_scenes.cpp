@@ -2,6 +2,7 @@
 #include "dpm/dpm_scenes.hpp"
 
 #include "dpm/modes_scene.hpp"
+#include "dpm/packing_scene.hpp"
 #include "dpm/shear_scene.hpp"
 
 namespace softgrain {
@@ -17,6 +18,11 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
                        "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
                        dpm::shear_friction_parameters(), dpm::run_shear_friction});
+    registry.add(
+        Scene{"dpm.packing_fraction",
+              "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, analytic "
+              "against Monte-Carlo, term by term (Table 9.2)",
+              dpm::packing_fraction_parameters(), dpm::run_packing_fraction});
 }
 
 } // namespace softgrain

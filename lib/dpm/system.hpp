@@ -9,6 +9,7 @@
 
 #include "dpm/shape_energy.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -38,6 +39,9 @@ struct DpmSystem
     InteractionKind interaction = InteractionKind::none;
     double kc = 1.0; // contact stiffness k_c [E/L^2]
     std::vector<Anchor> anchors;
+    // Side L of a periodic square box [0, L)^2 (minimum image between particles); absent: open space.
+    // Particles are kept whole (unwrapped); the box must exceed twice the reach of any particle pair.
+    std::optional<double> box;
 
     int vertex_count() const
     {
@@ -54,6 +58,12 @@ enum EnergyPart : unsigned { shape_part = 1u, interaction_part = 2u, anchor_part
 // Total energy of the parts selected; adds the gradient and the Hessian when they are given.
 double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                     Eigen::MatrixXd* hessian, unsigned parts = all_parts);
+
+// Minimum image of a separation in a periodic square box of side L.
+inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, double L)
+{
+    return d - L * (d / L).array().round().matrix();
+}
 
 // Vertices of a regular n-gon of circumradius r centred at c, counter-clockwise, vertex 0 at angle phase.
 Eigen::Matrix2Xd regular_polygon(int n, double r, const Eigen::Vector2d& c, double phase);
