@@ -40,7 +40,8 @@ Eigen::Matrix<double, 2 * K, 1> gather_image(const Eigen::VectorXd& x, const std
 
 // Eq. (9.4) for every vertex pair of particles a and b.
 double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, const Eigen::Vector2d& shift,
-                  const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
+                  const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
+                  Eigen::Matrix2d* virial)
 {
     const double sigma = 0.5 * (a.sigma + b.sigma);
     const VertexSpringEnergy spring{s.kc, sigma};
@@ -50,8 +51,8 @@ double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, cons
             if ((point(x, j) + shift - point(x, i)).squaredNorm() >= sigma * sigma)
                 continue; // Theta(sigma - r)
             const std::array<int, 2> pair{i, j};
-            energy +=
-                add_local_term<2, 2>(spring, pair, gather_image<2>(x, pair, b, shift), gradient, hessian);
+            energy += add_local_term<2, 2>(spring, pair, gather_image<2>(x, pair, b, shift), gradient,
+                                           hessian, virial);
         }
     return energy;
 }
@@ -60,7 +61,8 @@ double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, cons
 // the 1/2 of eq. (9.5).
 double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Particle& b,
                               const Eigen::Vector2d& shift, const Eigen::VectorXd& x,
-                              Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms)
+                              Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms,
+                              Eigen::Matrix2d* virial)
 {
     if (b.count < 2) return 0; // a disk has no edges
     const double sigma = 0.5 * (a.sigma + b.sigma);
@@ -86,7 +88,7 @@ double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Parti
                 if (d > 0 && d < sigma && (p - rp).dot(rj - rp) > 0 && (p - rj).dot(rp - rj) > 0) {
                     const std::array<int, 3> triple{i, previous, vj};
                     energy += add_local_term<2, 3>(edge, triple, gather_image<3>(x, triple, b, shift),
-                                                   gradient, hessian);
+                                                   gradient, hessian, virial);
                 }
             }
             const double r2 = (p - rj).squaredNorm();
@@ -97,11 +99,11 @@ double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Parti
             if ((terms & concave_smooth) && towards_previous > 0 && towards_next > 0 &&
                 distance_to_edge(p, j) > 0 && distance_to_edge(p, j + 1) > 0)
                 energy += add_local_term<2, 2>(concave, pair, gather_image<2>(x, pair, b, shift), gradient,
-                                               hessian);
+                                               hessian, virial);
             // U^convex, eq. (9.9): beyond both edges at vertex j.
             if ((terms & convex_smooth) && towards_previous < 0 && towards_next < 0)
-                energy +=
-                    add_local_term<2, 2>(convex, pair, gather_image<2>(x, pair, b, shift), gradient, hessian);
+                energy += add_local_term<2, 2>(convex, pair, gather_image<2>(x, pair, b, shift), gradient,
+                                               hessian, virial);
         }
     }
     return energy;
@@ -110,7 +112,7 @@ double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Parti
 } // namespace
 
 double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                          Eigen::MatrixXd* hessian, unsigned smooth_terms)
+                          Eigen::MatrixXd* hessian, unsigned smooth_terms, Eigen::Matrix2d* virial)
 {
     double energy = 0;
     const auto& particles = system.particles;
@@ -124,10 +126,12 @@ double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eig
             const double reach = circles[m].second + circles[b].second + 0.5 * (pm.sigma + pb.sigma);
             if ((circles[b].first + shift - circles[m].first).squaredNorm() >= reach * reach) continue;
             if (system.interaction == InteractionKind::rough)
-                energy += rough_pair(system, pm, pb, shift, x, gradient, hessian);
+                energy += rough_pair(system, pm, pb, shift, x, gradient, hessian, virial);
             else if (system.interaction == InteractionKind::smooth)
-                energy += smooth_vertex_particle(system, pm, pb, shift, x, gradient, hessian, smooth_terms) +
-                          smooth_vertex_particle(system, pb, pm, -shift, x, gradient, hessian, smooth_terms);
+                energy += smooth_vertex_particle(system, pm, pb, shift, x, gradient, hessian, smooth_terms,
+                                                 virial) +
+                          smooth_vertex_particle(system, pb, pm, -shift, x, gradient, hessian, smooth_terms,
+                                                 virial);
         }
     return energy;
 }

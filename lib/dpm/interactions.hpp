@@ -68,7 +68,11 @@ struct VertexEdgeEnergy
 
 // Interaction energy of the system (rough or smooth, as system.interaction says); adds its gradient and
 // Hessian when given. `smooth_terms` selects terms of the smooth interaction.
+// `virial`, when given, accumulates the force moment sum r_a F_b of every interaction term at the
+// coordinates it is evaluated with (minimum images): the pair part of eqs. (9.25)-(9.26) and its smooth
+// analogue (section 9.4.2).
 double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                          Eigen::MatrixXd* hessian, unsigned smooth_terms = all_smooth);
+                          Eigen::MatrixXd* hessian, unsigned smooth_terms = all_smooth,
+                          Eigen::Matrix2d* virial = nullptr);
 
 } // namespace softgrain::dpm

@@ -111,11 +111,23 @@ void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& point
 
 // Energy of one local term over `points` at local coordinates `local_x` (which may hold periodic images),
 // adding its gradient and Hessian (when asked for) into the global arrays. Returns the energy.
+// `virial`, when given, accumulates sum_k y_k F_k^T (W_ab = sum_k y_{k,a} F_{k,b}, F = -grad) over the
+// term's points at their local coordinates y_k: the force moment of eqs. (9.25)-(9.26). A term that is
+// invariant under translation has sum_k F_k = 0, so the moment does not depend on which image is used.
 template <int Dim, int K, class Term>
 double add_local_term(const Term& term, const std::array<int, K>& points,
                       const Eigen::Matrix<double, K * Dim, 1>& local_x, Eigen::VectorXd* gradient,
-                      Eigen::MatrixXd* hessian)
+                      Eigen::MatrixXd* hessian, Eigen::Matrix<double, Dim, Dim>* virial = nullptr)
 {
+    if (virial) {
+        const auto d =
+            hessian ? local_hessian<K * Dim>(term, local_x) : local_gradient<K * Dim>(term, local_x);
+        for (int k = 0; k < K; ++k)
+            *virial -= local_x.template segment<Dim>(Dim * k) *
+                       d.gradient.template segment<Dim>(Dim * k).transpose();
+        scatter<Dim, K>(d, points, 1.0, gradient, hessian);
+        return d.value;
+    }
     if (hessian) {
         const auto d = local_hessian<K * Dim>(term, local_x);
         scatter<Dim, K>(d, points, 1.0, gradient, hessian);

@@ -42,7 +42,7 @@ Packing jam_packing(const PackingOptions& o)
     s.interaction = o.interaction;
     s.kc = 1.0;
     const double L = std::sqrt(o.particles * a0 / o.phi_start);
-    s.box = L;
+    s.box = Eigen::Vector2d(L, L);
     Rng rng(o.seed);
     std::vector<Eigen::Vector2d> centres;
     const double exclusion = 2 * R + sigma;
@@ -57,7 +57,7 @@ Packing jam_packing(const PackingOptions& o)
             c = Eigen::Vector2d(rng.uniform(0, L), rng.uniform(0, L));
             free = true;
             for (const auto& other : centres)
-                if (minimum_image(c - other, L).norm() < exclusion) free = false;
+                if (minimum_image(c - other, *s.box).norm() < exclusion) free = false;
         }
         centres.push_back(c);
         s.add_particle(regular_polygon(n, R, c, rng.uniform(0, 2 * pi)), sigma, shape, out.x);
@@ -71,7 +71,7 @@ Packing jam_packing(const PackingOptions& o)
     const int max_steps = 100000;
     for (; out.compression_steps < max_steps; ++out.compression_steps) {
         const Eigen::VectorXd saved_x = out.x;
-        const double saved_box = *s.box;
+        const Eigen::Vector2d saved_box = *s.box;
         compress(s, out.x, 1.0 - step);
         const FireResult r = relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;

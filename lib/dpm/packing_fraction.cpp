@@ -46,7 +46,8 @@ bool inside_polygon(const Eigen::Vector2d& p, const Eigen::Matrix2Xd& v)
 PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     if (!system.box) throw InputError("packing fraction: the system has no periodic box");
-    const double L = *system.box, pi = std::numbers::pi;
+    const Eigen::Vector2d L = *system.box;
+    const double pi = std::numbers::pi;
     PackingAreas a;
     for (const Particle& p : system.particles) {
         a.polygon += particle_area(x, p.first, p.count);
@@ -73,7 +74,7 @@ PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::Vector
                     a.pair += vertex_overlap_segment(r, pm.sigma, pb.sigma);
                 }
         }
-    const double box_area = L * L;
+    const double box_area = L.prod();
     a.polygon /= box_area;
     a.vertices /= box_area;
     a.sector /= box_area;
@@ -86,7 +87,7 @@ PackingAreasEstimate packing_areas_monte_carlo(const DpmSystem& system, const Ei
                                                long samples, std::uint64_t seed)
 {
     if (!system.box) throw InputError("packing fraction: the system has no periodic box");
-    const double L = *system.box;
+    const Eigen::Vector2d L = *system.box;
     std::vector<Eigen::Matrix2Xd> polygons;
     std::vector<Eigen::Vector2d> centres;
     for (const Particle& p : system.particles) {
@@ -97,7 +98,7 @@ PackingAreasEstimate packing_areas_monte_carlo(const DpmSystem& system, const Ei
     // Running sums of each per-point indicator and of its square.
     Eigen::Array<double, 5, 1> sum = Eigen::Array<double, 5, 1>::Zero(), sum2 = sum;
     for (long k = 0; k < samples; ++k) {
-        const Eigen::Vector2d q(rng.uniform(0, L), rng.uniform(0, L));
+        const Eigen::Vector2d q(rng.uniform(0, L.x()), rng.uniform(0, L.y()));
         double in_polygon = 0, disks = 0, sectors = 0;
         for (std::size_t m = 0; m < polygons.size(); ++m) {
             const Particle& p = system.particles[m];

@@ -6,7 +6,7 @@
 //   A_pair = sum_mu sum_i I_{mu i, mu(i+1)} + sum_mu sum_i sum_{beta != mu} sum_j I_{mu i, beta j}  (9.19)
 //   I = Theta(sigma_mb - r) [(s_mu/2)^2 acos(d/(s_mu/2)) - d sqrt((s_mu/2)^2 - d^2)],
 //       d = (r^2 - (s_beta/2)^2 + (s_mu/2)^2)/(2 r)                                               (9.20)
-//   phi = A_particles / L^2                                                                      (9.22)
+//   phi = A_particles / (L_x L_y)                                                                      (9.22)
 // I is the circular segment of vertex disk mu i beyond the radical line with disk beta j. The formula is
 // exact for the union of polygons and vertex disks when no point lies in three disks and no vertex disk
 // reaches a non-adjacent edge (the text's 0.1 < r_{mu i, mu j}/sigma < 1 regime); Monte-Carlo integration

@@ -39,7 +39,7 @@ void run_packing_fraction(const Parameters& p, RunContext& context)
         s[std::string(name) + "_monte_carlo"] = mc.value.*field;
         s[std::string(name) + "_monte_carlo_error"] = mc.error.*field;
     }
-    s["box"] = *packing.system.box;
+    s["box"] = packing.system.box->x();
     s["compression_steps"] = packing.compression_steps;
 
     auto& vertices = context.table(
@@ -52,7 +52,7 @@ void run_packing_fraction(const Parameters& p, RunContext& context)
         const Particle& q = packing.system.particles[m];
         for (int v = 0; v <= q.count; ++v) {
             const int w = q.first + v % q.count;
-            vertices.row({double(m), packing.x(2 * w), packing.x(2 * w + 1), *packing.system.box,
+            vertices.row({double(m), packing.x(2 * w), packing.x(2 * w + 1), packing.system.box->x(),
                           v == q.count ? 1.0 : 0.0});
         }
     }

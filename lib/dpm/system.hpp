@@ -39,9 +39,9 @@ struct DpmSystem
     InteractionKind interaction = InteractionKind::none;
     double kc = 1.0; // contact stiffness k_c [E/L^2]
     std::vector<Anchor> anchors;
-    // Side L of a periodic square box [0, L)^2 (minimum image between particles); absent: open space.
+    // Sides (L_x, L_y) of a periodic rectangular box (minimum image between particles); absent: open space.
     // Particles are kept whole (unwrapped); the box must exceed twice the reach of any particle pair.
-    std::optional<double> box;
+    std::optional<Eigen::Vector2d> box;
 
     int vertex_count() const
     {
@@ -59,10 +59,10 @@ enum EnergyPart : unsigned { shape_part = 1u, interaction_part = 2u, anchor_part
 double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                     Eigen::MatrixXd* hessian, unsigned parts = all_parts);
 
-// Minimum image of a separation in a periodic square box of side L.
-inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, double L)
+// Minimum image of a separation in a periodic rectangular box of sides L = (L_x, L_y).
+inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vector2d& L)
 {
-    return d - L * (d / L).array().round().matrix();
+    return d - (L.array() * (d.array() / L.array()).round()).matrix();
 }
 
 // Vertices of a regular n-gon of circumradius r centred at c, counter-clockwise, vertex 0 at angle phase.
