@@ -1,6 +1,7 @@
 // Registration of the dpm.* scenes; each scene lives in its own file.
 #include "dpm/dpm_scenes.hpp"
 
+#include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
 #include "dpm/shear_scene.hpp"
@@ -23,6 +24,11 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, analytic "
               "against Monte-Carlo, term by term (Table 9.2)",
               dpm::packing_fraction_parameters(), dpm::run_packing_fraction});
+    registry.add(
+        Scene{"dpm.jam",
+              "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
+              "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
+              dpm::jam_parameters(), dpm::run_jam});
 }
 
 } // namespace softgrain

@@ -2,6 +2,11 @@
 
 #include "dpm/system.hpp"
 
+#include "core/errors.hpp"
+
+#include <algorithm>
+#include <string>
+
 namespace softgrain::dpm {
 
 namespace {
@@ -117,8 +122,16 @@ double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eig
     double energy = 0;
     const auto& particles = system.particles;
     std::vector<std::pair<Eigen::Vector2d, double>> circles;
-    for (const Particle& p : particles)
+    double reach = 0;
+    for (const Particle& p : particles) {
         circles.push_back(bounding_circle(p, x));
+        reach = std::max(reach, 2 * circles.back().second + p.sigma);
+    }
+    // One image per particle pair is exact only if no particle can touch two images of another.
+    if (system.box && 2 * reach >= system.box->minCoeff())
+        throw NumericalError("periodic box side " + std::to_string(system.box->minCoeff()) +
+                                 " below twice the largest pair reach " + std::to_string(reach),
+                             0, "too few particles for the box; use more particles");
     for (std::size_t m = 0; m < particles.size(); ++m)
         for (std::size_t b = m + 1; b < particles.size(); ++b) {
             const Particle &pm = particles[m], &pb = particles[b];
