@@ -122,15 +122,15 @@ double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eig
     double energy = 0;
     const auto& particles = system.particles;
     std::vector<std::pair<Eigen::Vector2d, double>> circles;
-    double reach = 0;
+    double largest_reach = 0;
     for (const Particle& p : particles) {
         circles.push_back(bounding_circle(p, x));
-        reach = std::max(reach, 2 * circles.back().second + p.sigma);
+        largest_reach = std::max(largest_reach, 2 * circles.back().second + p.sigma);
     }
     // One image per particle pair is exact only if no particle can touch two images of another.
-    if (system.box && 2 * reach >= system.box->minCoeff())
+    if (system.box && 2 * largest_reach >= system.box->minCoeff())
         throw NumericalError("periodic box side " + std::to_string(system.box->minCoeff()) +
-                                 " below twice the largest pair reach " + std::to_string(reach),
+                                 " below twice the largest pair reach " + std::to_string(largest_reach),
                              0, "too few particles for the box; use more particles");
     for (std::size_t m = 0; m < particles.size(); ++m)
         for (std::size_t b = m + 1; b < particles.size(); ++b) {

@@ -20,7 +20,7 @@ DpmSystem random_periodic(InteractionKind kind, Rng& rng, Eigen::VectorXd& x)
     DpmSystem s;
     s.interaction = kind;
     s.kc = 1.0;
-    s.box = Eigen::Vector2d(6.0, 5.0);
+    s.box = Eigen::Vector2d(8.0, 7.0);
     ShapeParameters shape;
     shape.ka = 0.9;
     shape.a0 = 1.2;
@@ -29,8 +29,8 @@ DpmSystem random_periodic(InteractionKind kind, Rng& rng, Eigen::VectorXd& x)
     shape.kb = 0.3;
     shape.theta0 = 2 * std::numbers::pi / 6;
     shape.gamma = 0.1;
-    for (int m = 0; m < 12; ++m) {
-        const Eigen::Vector2d c(rng.uniform(0, 6), rng.uniform(0, 5));
+    for (int m = 0; m < 22; ++m) {
+        const Eigen::Vector2d c(rng.uniform(0, 8), rng.uniform(0, 7));
         Eigen::Matrix2Xd v = regular_polygon(6, 0.75, c, rng.uniform(0, 2 * std::numbers::pi));
         v += 0.08 * Eigen::Matrix2Xd::Random(2, 6);
         s.add_particle(v, rng.uniform(0.6, 0.9), shape, x);
@@ -85,7 +85,7 @@ TEST_CASE("interaction virial does not depend on the periodic image: shifting a 
     Eigen::VectorXd moved = x;
     const Particle& p = s.particles[3];
     for (int v = p.first; v < p.first + p.count; ++v)
-        moved.segment<2>(2 * v) += Eigen::Vector2d(6.0, -5.0); // one box vector
+        moved.segment<2>(2 * v) += Eigen::Vector2d(8.0, -7.0); // one box vector
     const Eigen::Matrix2d after = stress_tensor(s, moved);
     // Only round-off: the force moments are evaluated at coordinates differing by a box vector.
     CHECK_CLOSE((after - before).norm(), 0.0, (Tolerance{0, 1e-12 * std::max(1.0, before.norm())}));
