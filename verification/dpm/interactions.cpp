@@ -29,7 +29,8 @@ DpmSystem random_overlapping(InteractionKind kind, Rng& rng, Eigen::VectorXd& x)
         const int n = 5 + static_cast<int>(rng.uniform(0, 6));
         Eigen::Matrix2Xd v =
             regular_polygon(n, 1.0, Eigen::Vector2d(1.6 * m, rng.uniform(-0.3, 0.3)), rng.uniform(0, 2 * pi));
-        v += 0.12 * Eigen::Matrix2Xd::Random(2, n);
+        for (Eigen::Index k = 0; k < v.size(); ++k)
+            v(k) += 0.12 * rng.uniform(-1, 1); // seeded (not std::rand: independent of test order)
         s.add_particle(v, rng.uniform(0.4, 0.9), ShapeParameters{}, x);
     }
     return s;
