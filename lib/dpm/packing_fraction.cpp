@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,7 +14,10 @@ double vertex_overlap_segment(double r, double sigma_mu, double sigma_beta)
     const double a = 0.5 * sigma_mu, b = 0.5 * sigma_beta;
     if (r >= a + b) return 0.0;
     const double d = (r * r - b * b + a * a) / (2 * r); // distance from the centre of mu to the radical line
-    return a * a * std::acos(d / a) - d * std::sqrt(a * a - d * d);
+    // |d| <= a in the regime of eq. (9.20); beyond it (one disk nested in the other) the radical line misses
+    // disk mu and the segment is all of it (d <= -a) or nothing (d >= a): clamping d gives exactly that.
+    const double c = std::clamp(d / a, -1.0, 1.0);
+    return a * a * (std::acos(c) - c * std::sqrt(1 - c * c));
 }
 
 namespace {
@@ -43,43 +47,61 @@ bool inside_polygon(const Eigen::Vector2d& p, const Eigen::Matrix2Xd& v)
 
 } // namespace
 
-PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x)
+PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x, std::size_t m)
 {
     if (!system.box) throw InputError("packing fraction: the system has no periodic box");
     const Eigen::Vector2d L = *system.box;
     const double pi = std::numbers::pi;
-    PackingAreas a;
-    for (const Particle& p : system.particles) {
-        a.polygon += particle_area(x, p.first, p.count);
-        a.vertices += p.count * pi * p.sigma * p.sigma / 4;
-        for (int i = 0; i < p.count; ++i) {
-            const Eigen::Vector2d prev = vertex_position(x, p.first + wrap(i - 1, p.count));
-            const Eigen::Vector2d here = vertex_position(x, p.first + i);
-            const Eigen::Vector2d next = vertex_position(x, p.first + wrap(i + 1, p.count));
-            const Eigen::Vector2d in = here - prev, out = next - here;
-            const double theta =
-                std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)); // turning angle
-            a.sector += p.sigma * p.sigma * (pi - theta) / 8;
-            a.pair += vertex_overlap_segment(out.norm(), p.sigma, p.sigma); // I_{mu i, mu(i+1)}
+    const Particle& p = system.particles[m];
+    PackingAreas t;
+    t.polygon = particle_area(x, p.first, p.count);
+    t.vertices = p.count * pi * p.sigma * p.sigma / 4;
+    for (int i = 0; i < p.count; ++i) {
+        const Eigen::Vector2d prev = vertex_position(x, p.first + wrap(i - 1, p.count));
+        const Eigen::Vector2d here = vertex_position(x, p.first + i);
+        const Eigen::Vector2d next = vertex_position(x, p.first + wrap(i + 1, p.count));
+        const Eigen::Vector2d in = here - prev, out = next - here;
+        const double theta = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)); // turning angle
+        t.sector += p.sigma * p.sigma * (pi - theta) / 8;
+        t.pair += vertex_overlap_segment(out.norm(), p.sigma, p.sigma); // I_{mu i, mu(i+1)}
+        // Interparticle overlaps attributed to vertex mu i (minimum image).
+        for (std::size_t b = 0; b < system.particles.size(); ++b) {
+            if (b == m) continue;
+            const Particle& q = system.particles[b];
+            for (int j = q.first; j < q.first + q.count; ++j)
+                t.pair += vertex_overlap_segment(minimum_image(vertex_position(x, j) - here, L).norm(),
+                                                 p.sigma, q.sigma);
         }
     }
-    // Interparticle overlaps: both segments of every overlapping pair (sum over beta != mu), minimum image.
+    t.phi = t.polygon + t.vertices - t.sector - t.pair; // A_mu, eq. (9.21)
+    return t;
+}
+
+std::vector<double> particle_areas(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    std::vector<double> areas;
     for (std::size_t m = 0; m < system.particles.size(); ++m)
-        for (std::size_t b = 0; b < system.particles.size(); ++b) {
-            if (m == b) continue;
-            const Particle &pm = system.particles[m], &pb = system.particles[b];
-            for (int i = pm.first; i < pm.first + pm.count; ++i)
-                for (int j = pb.first; j < pb.first + pb.count; ++j) {
-                    const double r = minimum_image(vertex_position(x, j) - vertex_position(x, i), L).norm();
-                    a.pair += vertex_overlap_segment(r, pm.sigma, pb.sigma);
-                }
-        }
-    const double box_area = L.prod();
+        areas.push_back(particle_area_terms(system, x, m).phi);
+    return areas;
+}
+
+PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    PackingAreas a;
+    for (std::size_t m = 0; m < system.particles.size(); ++m) {
+        const PackingAreas t = particle_area_terms(system, x, m);
+        a.polygon += t.polygon;
+        a.vertices += t.vertices;
+        a.sector += t.sector;
+        a.pair += t.pair;
+        a.phi += t.phi; // A_particles = sum_mu A_mu, eq. (9.18)
+    }
+    const double box_area = system.box->prod(); // eq. (9.22)
     a.polygon /= box_area;
     a.vertices /= box_area;
     a.sector /= box_area;
     a.pair /= box_area;
-    a.phi = a.polygon + a.vertices - a.sector - a.pair; // eqs. (9.18), (9.22)
+    a.phi /= box_area;
     return a;
 }
 

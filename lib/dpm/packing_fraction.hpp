@@ -16,6 +16,7 @@
 #include "dpm/system.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace softgrain::dpm {
 
@@ -33,6 +34,11 @@ struct PackingAreasEstimate
 {
     PackingAreas value, error;
 };
+
+// The terms of eq. (9.21) for particle m (areas in L^2, not divided by the box; phi holds A_mu itself).
+PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x, std::size_t m);
+// A_mu of every particle, eq. (9.21).
+std::vector<double> particle_areas(const DpmSystem& system, const Eigen::VectorXd& x);
 
 // Analytic eqs. (9.18)-(9.22) for the periodic system (system.box must be set).
 PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x);

@@ -12,9 +12,18 @@
 
 #include "dpm/system.hpp"
 
+#include <vector>
+
 namespace softgrain::dpm {
 
 Eigen::Matrix2d stress_tensor(const DpmSystem& system, const Eigen::VectorXd& x);
+
+// Eq. (9.27), rough interactions: stress of each particle mu,
+//   Sigma_mu = (1/A_mu) [ sum_i r~_i F^shape_i - sum_i sum_{beta != mu} sum_j (h_{mu i,beta j}/r) r_{mu
+//   i,beta j} F_{mu i,beta j} ]
+// with A_mu of eq. (9.21) and h the distance from vertex mu i to the contact line of the pair (eq. 9.20).
+// Sum rule: sum_mu A_mu Sigma_mu = A Sigma (h_{mu i, beta j} + h_{beta j, mu i} = r).
+std::vector<Eigen::Matrix2d> particle_stresses(const DpmSystem& system, const Eigen::VectorXd& x);
 
 inline double pressure(const Eigen::Matrix2d& stress)
 {

@@ -3,6 +3,7 @@
 // homogeneous strain of every vertex and of the box. Holds for any configuration (not only equilibria):
 // the test uses random overlapping particles across the periodic boundaries, rough and smooth.
 #include "core/rng.hpp"
+#include "dpm/packing_fraction.hpp"
 #include "dpm/stress.hpp"
 #include "support/tolerance.hpp"
 
@@ -91,4 +92,21 @@ TEST_CASE("interaction virial does not depend on the periodic image: shifting a 
     const Eigen::Matrix2d after = stress_tensor(s, moved);
     // Only round-off: the force moments are evaluated at coordinates differing by a box vector.
     CHECK_CLOSE((after - before).norm(), 0.0, (Tolerance{0, 1e-12 * std::max(1.0, before.norm())}));
+}
+
+TEST_CASE(
+    "per-particle stresses weighted by their areas sum to the total stress [DPM eq. (9.27) and its sum rule]")
+{
+    Rng rng(21);
+    Eigen::VectorXd x;
+    const DpmSystem s = random_periodic(InteractionKind::rough, rng, x);
+    const std::vector<Eigen::Matrix2d> parts = particle_stresses(s, x);
+    const std::vector<double> areas = particle_areas(s, x);
+    Eigen::Matrix2d sum = Eigen::Matrix2d::Zero();
+    for (std::size_t m = 0; m < parts.size(); ++m)
+        sum += areas[m] * parts[m];
+    const Eigen::Matrix2d total = s.box->prod() * stress_tensor(s, x);
+    // An identity (h_{mu i,beta j} + h_{beta j,mu i} = r): round-off of sums over ~100 contact terms.
+    CHECK_CLOSE((sum - total).norm(), 0.0, (Tolerance{0, 1e-12 * total.norm()}));
+    CHECK(total.norm() > 0);
 }
