@@ -1,6 +1,7 @@
 // Registration of the dpm.* scenes; each scene lives in its own file.
 #include "dpm/dpm_scenes.hpp"
 
+#include "dpm/compress_scene.hpp"
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
@@ -29,6 +30,11 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
               "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
               dpm::jam_parameters(), dpm::run_jam});
+    registry.add(
+        Scene{"dpm.compress2d",
+              "DPM sec. 9.3.4: an elastic shell compressed between two plates, F_a against delta/D and "
+              "its small-strain exponent (Fig. 9.10)",
+              dpm::compress2d_parameters(), dpm::run_compress2d});
 }
 
 } // namespace softgrain
