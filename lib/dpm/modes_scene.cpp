@@ -4,6 +4,7 @@
 
 #include "core/errors.hpp"
 #include "core/output.hpp"
+#include "dpm/jam.hpp"
 #include "dpm/modes.hpp"
 #include "dpm/single_particle.hpp"
 
@@ -33,35 +34,12 @@ nlohmann::json median_or_null(std::vector<double> values)
 
 } // namespace
 
-void run_modes(const Parameters& p, RunContext& context)
+// Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
+// keys common to single particles and packings. Returns the number of zero modes.
+int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double threshold,
+                   RunContext& context)
 {
-    const int n = static_cast<int>(p.integer("nodes"));
-    const ShapeModel model = shape_model_from_name(p.choice("model"));
-    const double a_min = minimum_shape_parameter(n);
-    const double A0 = p.real("A0") == 0 ? a_min : p.real("A0");
-    if (A0 < a_min)
-        throw InputError(
-            "A0 = " + std::to_string(A0) +
-            ": must be 0 (A_min) or >= A_min(nodes) = N tan(pi/N)/pi = " + std::to_string(a_min));
-    const double a0 = 1.0; // unit of area; k_a = 1 sets the energy unit k_a a0^2
-    ShapeStiffness k;
-    k.ka = 1.0;
-    k.kl = p.real("kl");
-    k.kb = p.real("kb");
-    k.gamma = p.real("gamma");
-    k.kl_surface = p.real("kl_surface");
-
-    const auto seed = static_cast<std::uint64_t>(p.integer("seed"));
-    context.record_seed(seed);
-    const SingleParticle particle = single_particle_equilibrium(model, n, a0, A0, k, seed);
-    const DpmSystem& system = particle.system;
-    const Eigen::VectorXd& x = particle.x;
-    const double force = particle.force_max;
-    context.count_steps(particle.fire_iterations);
-
     const ModeSpectrum modes = vibrational_modes(system, x);
-    const double unit = k.ka * a0; // lambda~ = lambda/(k_a a0)
-    const double threshold = p.real("zero_threshold");
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
     const int zero = count_zero_modes(lambda, threshold);
 
@@ -95,19 +73,75 @@ void run_modes(const Parameters& p, RunContext& context)
 
     auto& s = context.summary();
     s["zero_modes"] = zero;
-    s["zero_modes_nontrivial"] = zero - 3;
     s["lambda_smallest_nonzero"] =
         zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
     s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
     s["lambda_max"] = lambda(lambda.size() - 1);
+    s["energy"] = u0;
+    s["zero_mode_exponent"] = median_or_null(zero_exponents);
+    s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
+    return zero;
+}
+
+// A jammed packing (dpm.jam protocol) at the requested pressure and its spectrum (Fig. 9.14b).
+void run_packing_modes(const Parameters& p, RunContext& context)
+{
+    JamOptions o;
+    o.model = p.choice("model");
+    o.particles = static_cast<int>(p.integer("particles"));
+    o.nodes_small = static_cast<int>(p.integer("nodes"));
+    o.nodes_large = o.nodes_small + 4;
+    o.pressure_onset = p.real("pressure");
+    o.pressure_max = o.pressure_onset;
+    o.pressures = 0;
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(o.seed);
+    const JamResult r = jam(o);
+    context.count_steps(r.fire_iterations);
+    write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
+    auto& s = context.summary();
+    s["pressure_reached"] = r.states.back().pressure;
+    s["phi"] = r.states.back().phi;
+}
+
+void run_modes(const Parameters& p, RunContext& context)
+{
+    if (p.integer("particles") > 1) {
+        run_packing_modes(p, context);
+        return;
+    }
+    const int n = static_cast<int>(p.integer("nodes"));
+    const ShapeModel model = shape_model_from_name(p.choice("model"));
+    const double a_min = minimum_shape_parameter(n);
+    const double A0 = p.real("A0") == 0 ? a_min : p.real("A0");
+    if (A0 < a_min)
+        throw InputError(
+            "A0 = " + std::to_string(A0) +
+            ": must be 0 (A_min) or >= A_min(nodes) = N tan(pi/N)/pi = " + std::to_string(a_min));
+    const double a0 = 1.0; // unit of area; k_a = 1 sets the energy unit k_a a0^2
+    ShapeStiffness k;
+    k.ka = 1.0;
+    k.kl = p.real("kl");
+    k.kb = p.real("kb");
+    k.gamma = p.real("gamma");
+    k.kl_surface = p.real("kl_surface");
+
+    const auto seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(seed);
+    const SingleParticle particle = single_particle_equilibrium(model, n, a0, A0, k, seed);
+    const DpmSystem& system = particle.system;
+    const Eigen::VectorXd& x = particle.x;
+    const double force = particle.force_max;
+    context.count_steps(particle.fire_iterations);
+
+    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context);
+    auto& s = context.summary();
+    s["zero_modes_nontrivial"] = zero - 3;
     s["A0_used"] = A0;
     s["A_min"] = a_min;
     s["shape_parameter"] = shape_parameter(particle_perimeter(x, 0, n), particle_area(x, 0, n));
     s["area"] = particle_area(x, 0, n);
-    s["energy"] = u0;
     s["force_max"] = force;
-    s["zero_mode_exponent"] = median_or_null(zero_exponents);
-    s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
 }
 
 std::vector<ParameterSpec> modes_parameters()
@@ -116,10 +150,13 @@ std::vector<ParameterSpec> modes_parameters()
         ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension"},
                               "particle type of Table 9.1"),
         ParameterSpec::integer("nodes", 10, "1", "vertices N_mu of the particle").at_least(3),
-        ParameterSpec::integer("particles", 1, "1",
-                               "1 = a single particle (jammed packings are not implemented yet)")
-            .at_least(1)
-            .at_most(1),
+        ParameterSpec::integer(
+            "particles", 1, "1",
+            "1 = a single particle; more: a jammed bidisperse packing (dpm.jam protocol, nodes "
+            "and nodes + 4 vertices, stiffnesses of decision dpm-jam-polygons)")
+            .at_least(1),
+        ParameterSpec::real("pressure", 1e-7, "k_a a0", "packings: pressure of the analysed packing")
+            .positive(),
         ParameterSpec::real(
             "A0", 1.04, "1",
             "preferred shape parameter A0 = (N l0)^2/(4 pi a0); 0 selects A_min = N tan(pi/N)/pi")
