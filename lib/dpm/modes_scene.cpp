@@ -98,8 +98,16 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     context.record_seed(o.seed);
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);
-    write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
+    const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
+    // Rattlers: particles without any contact; each carries 3 zero modes (2 translations, 1 rotation).
+    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
+    total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);
+    int rattlers = 0;
+    for (const Particle& q : r.system.particles)
+        rattlers += contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0);
     auto& s = context.summary();
+    s["rattlers"] = rattlers;
+    s["zero_modes_without_rattlers"] = zero - 3 * rattlers;
     s["pressure_reached"] = r.states.back().pressure;
     s["phi"] = r.states.back().phi;
 }
