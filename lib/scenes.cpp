@@ -1,6 +1,7 @@
 // The catalogue of every scene softgrain knows: each method registers its own.
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
+#include "dpm/dpm_scenes.hpp"
 #include "sd/sd_scenes.hpp"
 
 namespace softgrain {
@@ -9,6 +10,7 @@ SceneRegistry all_scenes()
 {
     SceneRegistry registry;
     register_core_scenes(registry);
+    register_dpm_scenes(registry);
     register_sd_scenes(registry);
     return registry;
 }

@@ -1,0 +1,17 @@
+// dpm.compress2d scene (see compress_scene.cpp).
+#pragma once
+
+#include "core/parameters.hpp"
+
+#include <vector>
+
+namespace softgrain {
+class RunContext;
+}
+
+namespace softgrain::dpm {
+
+void run_compress2d(const Parameters& p, RunContext& context);
+std::vector<ParameterSpec> compress2d_parameters();
+
+} // namespace softgrain::dpm

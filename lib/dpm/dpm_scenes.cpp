@@ -1,0 +1,40 @@
+// Registration of the dpm.* scenes; each scene lives in its own file.
+#include "dpm/dpm_scenes.hpp"
+
+#include "dpm/compress_scene.hpp"
+#include "dpm/jam_scene.hpp"
+#include "dpm/modes_scene.hpp"
+#include "dpm/packing_scene.hpp"
+#include "dpm/shear_scene.hpp"
+
+namespace softgrain {
+
+void register_dpm_scenes(SceneRegistry& registry)
+{
+    registry.add(
+        Scene{"dpm.modes",
+              "DPM eq. (9.28): eigenvalues of the dynamical matrix of a floppy / shell / surface-tension "
+              "particle, zero modes, Delta U along each mode (Figs. 9.14a, c)",
+              dpm::modes_parameters(), dpm::run_modes});
+    registry.add(Scene{"dpm.shear_friction",
+                       "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
+                       "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
+                       dpm::shear_friction_parameters(), dpm::run_shear_friction});
+    registry.add(
+        Scene{"dpm.packing_fraction",
+              "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, analytic "
+              "against Monte-Carlo, term by term (Table 9.2)",
+              dpm::packing_fraction_parameters(), dpm::run_packing_fraction});
+    registry.add(
+        Scene{"dpm.jam",
+              "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
+              "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
+              dpm::jam_parameters(), dpm::run_jam});
+    registry.add(
+        Scene{"dpm.compress2d",
+              "DPM sec. 9.3.4: an elastic shell compressed between two plates, F_a against delta/D and "
+              "its small-strain exponent (Fig. 9.10)",
+              dpm::compress2d_parameters(), dpm::run_compress2d});
+}
+
+} // namespace softgrain

@@ -1,0 +1,156 @@
+#include "dpm/jam.hpp"
+
+#include "core/errors.hpp"
+#include "core/rng.hpp"
+#include "dpm/modes.hpp"
+#include "dpm/packing_fraction.hpp"
+#include "dpm/stress.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace softgrain::dpm {
+
+namespace {
+
+void compress(DpmSystem& system, Eigen::VectorXd& x, double f)
+{
+    for (const Particle& p : system.particles) {
+        auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
+        const Eigen::Vector2d centre = v.rowwise().mean();
+        v.colwise() += (f - 1.0) * centre;
+    }
+    *system.box *= f;
+}
+
+} // namespace
+
+double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    bool disks = true;
+    for (const Particle& p : system.particles)
+        disks = disks && p.count == 1;
+    if (!disks) return packing_areas_analytic(system, x).phi;
+    double area = 0;
+    for (const Particle& p : system.particles)
+        area += 0.25 * std::numbers::pi * p.sigma * p.sigma;
+    return area / system.box->prod();
+}
+
+JamResult jam(const JamOptions& o)
+{
+    const double pi = std::numbers::pi;
+    JamResult out;
+    DpmSystem& s = out.system;
+    s.interaction = InteractionKind::rough;
+    s.kc = 1.0;
+    Rng rng(o.seed);
+    const bool disks = o.model == "smooth_disk";
+    if (disks) {
+        double area = 0;
+        for (int m = 0; m < o.particles; ++m)
+            area += 0.25 * pi * std::pow(m < o.particles / 2 ? 1.0 : o.size_ratio, 2);
+        const double L = std::sqrt(area / o.phi_start);
+        s.box = Eigen::Vector2d(L, L);
+        for (int m = 0; m < o.particles; ++m) {
+            Eigen::Matrix2Xd c(2, 1);
+            c << rng.uniform(0, L), rng.uniform(0, L);
+            s.add_particle(c, m < o.particles / 2 ? 1.0 : o.size_ratio, ShapeParameters{}, out.x);
+        }
+    } else {
+        // Vertex diameter sigma = 1; small polygons of N_small vertices with R/sigma such that neighbouring
+        // vertices overlap as in Fig. 9.12 (edge = 0.85 sigma); large ones scaled by size_ratio in diameter
+        // with N_large vertices (decision dpm-jam-polygons).
+        const ShapeModel model = shape_model_from_name(o.model);
+        const double r_small = 0.85 / (2 * std::sin(pi / o.nodes_small));
+        const double a0_small = 0.5 * o.nodes_small * r_small * r_small * std::sin(2 * pi / o.nodes_small);
+        std::vector<std::pair<int, double>> kinds;
+        double area = 0;
+        for (int m = 0; m < o.particles; ++m) {
+            const bool small = m < o.particles / 2;
+            const int n = small ? o.nodes_small : o.nodes_large;
+            const double r = small ? r_small : o.size_ratio * r_small;
+            kinds.push_back({n, r});
+            area += std::pow(2 * r + 1.0, 2);
+        }
+        const double L = std::sqrt(area / 0.25);
+        s.box = Eigen::Vector2d(L, L);
+        std::vector<Eigen::Vector2d> centres;
+        std::vector<double> radii;
+        for (const auto& [n, r] : kinds) {
+            const double a0 = 0.5 * n * r * r * std::sin(2 * pi / n);
+            ShapeStiffness k;
+            k.ka = 1.0 / (a0_small * a0_small); // k_a a0^2 = k_c sigma^2 (decision dpm-jam-polygons)
+            k.kl = 1.0;
+            k.kb = 0.1;
+            k.gamma = 0.1 * k.ka * std::pow(a0_small, 1.5);
+            const double A0 =
+                model == ShapeModel::floppy ? 1.04 * minimum_shape_parameter(n) : minimum_shape_parameter(n);
+            Eigen::Vector2d c;
+            for (int tries = 0;; ++tries) {
+                if (tries > 100000)
+                    throw InputError("particles = " + std::to_string(o.particles) + ": no room at the start");
+                c = Eigen::Vector2d(rng.uniform(0, L), rng.uniform(0, L));
+                bool free = true;
+                for (std::size_t q = 0; q < centres.size(); ++q)
+                    if (minimum_image(c - centres[q], *s.box).norm() < r + radii[q] + 1.0) free = false;
+                if (free) break;
+            }
+            centres.push_back(c);
+            radii.push_back(r);
+            Eigen::Matrix2Xd v = regular_polygon(n, r, c, rng.uniform(0, 2 * pi));
+            s.add_particle(v, 1.0, table_9_1_parameters(model, n, a0, A0, k), out.x);
+        }
+        out.pressure_unit = 1.0 / a0_small; // k_a a0 = (1/a0^2) a0
+    }
+
+    FireOptions fire;
+    fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
+    fire.dt_initial = 0.25 * fire.dt_max;
+    fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
+    const auto relax = [&](long step_index) {
+        const FireResult r = relax_fire(s, out.x, fire);
+        out.fire_iterations += r.iterations;
+        if (!r.converged)
+            throw NumericalError(
+                "FIRE relaxation during compression (force rms " + std::to_string(r.force_rms) + ")",
+                step_index, "force tolerance too small for the pressure; raise pressure_onset");
+        return r.iterations;
+    };
+    const auto current_pressure = [&] { return pressure(stress_tensor(s, out.x)) / out.pressure_unit; };
+    relax(0);
+
+    // Targets: onset, then log-spaced pressures up to pressure_max.
+    std::vector<double> targets{o.pressure_onset};
+    for (int k = 1; k <= o.pressures; ++k)
+        targets.push_back(o.pressure_onset *
+                          std::pow(o.pressure_max / o.pressure_onset, double(k) / o.pressures));
+    double step = 5e-3;
+    long step_index = 0;
+    for (double target : targets) {
+        long iterations = 0;
+        for (;; ++step_index) {
+            const double p = current_pressure();
+            if (p >= target && p < 1.01 * target) break;
+            if (step < 1e-15)
+                throw NumericalError("compression step below 1e-15 before 1 <= P/P_target < 1.01", step_index,
+                                     "a rearrangement makes the pressure jump over the window");
+            const Eigen::VectorXd saved_x = out.x;
+            const Eigen::Vector2d saved_box = *s.box;
+            compress(s, out.x, 1.0 - step);
+            iterations += relax(step_index);
+            const double after = current_pressure();
+            if (after >= 1.01 * target) { // overshoot: back, halve (section 9.4)
+                out.x = saved_x;
+                *s.box = saved_box;
+                step *= 0.5;
+            } else if (after < 0.5 * target && after > 0) {
+                step *= 2; // far below a target above onset: grow again (decision dpm-jam-protocol)
+            }
+        }
+        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations});
+    }
+    return out;
+}
+
+} // namespace softgrain::dpm

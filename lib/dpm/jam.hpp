@@ -1,0 +1,52 @@
+// Jamming of bidisperse packings in a periodic square box, DPM section 9.4 (Fig. 9.13):
+// compress isotropically (particle centres scaled, shapes kept) in steps Delta L/L, FIRE after each; if the
+// pressure P = Tr(Sigma)/2 (eq. 9.26) exceeds the target by more than 1 %, return to the state before the
+// step and halve Delta L/L; stop at 1 <= P/P_target < 1.01. Onset: P_target = P_t; then further targets
+// log-spaced up to pressure_max, each reached the same way from the previous packing.
+// Models: smooth_disk = one-vertex particles (purely repulsive linear springs between disk centres, eq. 9.4
+// with sigma = disk diameter); shell, floppy, surface_tension = rough deformable polygons of Table 9.1.
+// Bidisperse 50:50 with diameter ratio 1.4 (disks) or polygon-diameter ratio 1.4 (N_small, N_large vertices).
+#pragma once
+
+#include "dpm/system.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace softgrain::dpm {
+
+struct JamOptions
+{
+    std::string model = "smooth_disk"; // smooth_disk | shell | floppy | surface_tension
+    int particles = 16;
+    int nodes_small = 10, nodes_large = 14;
+    double size_ratio = 1.4;
+    double pressure_onset = 1e-7; // P_t in units of k_c (disks) or k_a a0 (deformable particles)
+    double pressure_max = 1e-3;
+    int pressures = 5;      // targets log-spaced in (P_t, pressure_max]
+    double phi_start = 0.3; // disks: packing fraction of the random start
+    std::uint64_t seed = 1;
+};
+
+struct JamState
+{
+    double phi = 0, pressure = 0; // pressure in the model's unit
+    long fire_iterations = 0;
+};
+
+struct JamResult
+{
+    std::vector<JamState> states; // onset first, then the compressed states
+    DpmSystem system;
+    Eigen::VectorXd x;
+    double pressure_unit = 1; // k_c (disks) or k_a a0
+    long fire_iterations = 0;
+};
+
+JamResult jam(const JamOptions& options);
+
+// Packing fraction: disks sum pi sigma^2/4 / A; deformable particles eq. (9.22).
+double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x);
+
+} // namespace softgrain::dpm

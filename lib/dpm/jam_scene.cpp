@@ -1,0 +1,76 @@
+// dpm.jam: jamming onset and compression of bidisperse packings (section 9.4, Fig. 9.13): P against
+// phi - phi_c, phi_c and the bulk modulus B of <P> = B (phi - phi_c).
+#include "dpm/jam_scene.hpp"
+
+#include "core/output.hpp"
+#include "dpm/jam.hpp"
+
+#include <gsl/gsl_fit.h>
+
+#include <cmath>
+
+namespace softgrain::dpm {
+
+void run_jam(const Parameters& p, RunContext& context)
+{
+    JamOptions o;
+    o.model = p.choice("model");
+    o.particles = static_cast<int>(p.integer("particles"));
+    o.nodes_small = static_cast<int>(p.integer("nodes_small"));
+    o.nodes_large = static_cast<int>(p.integer("nodes_large"));
+    o.pressure_onset = p.real("pressure_onset");
+    o.pressure_max = p.real("pressure_max");
+    o.pressures = static_cast<int>(p.integer("pressures"));
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(o.seed);
+    const JamResult r = jam(o);
+    context.count_steps(r.fire_iterations);
+    const double phi_c = r.states.front().phi;
+    auto& table = context.table("pressure.dat", {{"phi", "1", "packing fraction (eq. 9.22 or disk area)"},
+                                                 {"dphi", "1", "phi - phi_c"},
+                                                 {"P", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"}});
+    std::vector<double> dphi, pressure, log_dphi, log_p;
+    for (const JamState& s : r.states) {
+        table.row({s.phi, s.phi - phi_c, s.pressure});
+        if (&s == &r.states.front()) continue;
+        dphi.push_back(s.phi - phi_c);
+        pressure.push_back(s.pressure);
+        log_dphi.push_back(std::log(s.phi - phi_c));
+        log_p.push_back(std::log(s.pressure));
+    }
+    auto& s = context.summary();
+    s["phi_c"] = phi_c;
+    s["states"] = r.states.size();
+    if (dphi.size() >= 2) {
+        double b = 0, cov = 0, sumsq = 0;
+        gsl_fit_mul(dphi.data(), 1, pressure.data(), 1, dphi.size(), &b, &cov, &sumsq); // P = B dphi
+        s["bulk_modulus"] = b;
+        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0;
+        gsl_fit_linear(log_dphi.data(), 1, log_p.data(), 1, log_dphi.size(), &c0, &c1, &c00, &c01, &c11,
+                       &sumsq);
+        s["pressure_exponent"] = c1;
+    } else {
+        s["bulk_modulus"] = nullptr;
+        s["pressure_exponent"] = nullptr;
+    }
+}
+
+std::vector<ParameterSpec> jam_parameters()
+{
+    return {
+        ParameterSpec::integer("particles", 16, "1", "particles N, half small, half large").at_least(2),
+        ParameterSpec::integer("nodes_small", 10, "1", "vertices of the small particles").at_least(3),
+        ParameterSpec::integer("nodes_large", 14, "1", "vertices of the large particles").at_least(3),
+        ParameterSpec::choice("model", "smooth_disk", {"smooth_disk", "shell", "floppy", "surface_tension"},
+                              "smooth bidisperse disks or rough deformable particles of Table 9.1 "
+                              "(rough_disk: not implemented)"),
+        ParameterSpec::integer("seed", 1, "1", "seed of the random initial placement").non_negative(),
+        ParameterSpec::real("pressure_onset", 1e-7, "k_c or k_a a0", "P_t: jamming onset pressure")
+            .positive(),
+        ParameterSpec::real("pressure_max", 1e-3, "k_c or k_a a0", "largest pressure of the compression")
+            .positive(),
+        ParameterSpec::integer("pressures", 5, "1", "pressures log-spaced above onset").at_least(1),
+    };
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,144 @@
+// Exact first and second derivatives of a local energy term by forward-mode automatic differentiation
+// (Eigen's AutoDiffScalar, nested once for the Hessian).
+//
+// A local term is a function of the coordinates of K points in Dim dimensions, written once as a generic
+// callable `term(x)` where x is an Eigen::Matrix<Scalar, K * Dim, 1> (point k occupies rows
+// Dim k ... Dim k + Dim - 1) and the result is a Scalar. The same code is then evaluated with
+//   double                                    -> the value,
+//   AutoDiffScalar<Matrix<double, N, 1>>       -> value and gradient (N = K Dim),
+//   AutoDiffScalar<Matrix<that, N, 1>>         -> value, gradient and Hessian.
+// Every DPM energy (2D shape terms, rough and smooth contacts; 3D faces and dihedrals later) is such a
+// term, so no derivative is written by hand. The sizes are fixed at compile time: no allocation.
+//
+// Rule for writing a term (Eigen's AutoDiff builds expression templates that may refer to temporaries):
+// declare the return type as the Scalar and every intermediate as a Scalar, never `auto`. The functions
+// below refuse at compile time a term whose result is not exactly the Scalar.
+#pragma once
+
+#include <type_traits>
+
+#include <Eigen/Core>
+#include <array>
+#include <unsupported/Eigen/AutoDiff>
+
+namespace softgrain::dpm {
+
+template <int N>
+using FirstOrder = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+template <int N>
+using SecondOrder = Eigen::AutoDiffScalar<Eigen::Matrix<FirstOrder<N>, N, 1>>;
+
+template <int N>
+struct LocalDerivatives
+{
+    double value = 0;
+    Eigen::Matrix<double, N, 1> gradient = Eigen::Matrix<double, N, 1>::Zero();
+    Eigen::Matrix<double, N, N> hessian = Eigen::Matrix<double, N, N>::Zero();
+};
+
+// Value and gradient of term at x.
+template <int N, class Term>
+LocalDerivatives<N> local_gradient(const Term& term, const Eigen::Matrix<double, N, 1>& x)
+{
+    Eigen::Matrix<FirstOrder<N>, N, 1> ad;
+    for (int k = 0; k < N; ++k)
+        ad(k) = FirstOrder<N>(x(k), N, k);
+    static_assert(std::is_same_v<decltype(term(ad)), FirstOrder<N>>, "a term must return its Scalar");
+    const FirstOrder<N> result = term(ad);
+    LocalDerivatives<N> d;
+    d.value = result.value();
+    d.gradient = result.derivatives();
+    return d;
+}
+
+// Value, gradient and Hessian of term at x.
+template <int N, class Term>
+LocalDerivatives<N> local_hessian(const Term& term, const Eigen::Matrix<double, N, 1>& x)
+{
+    using Inner = FirstOrder<N>;
+    using Outer = SecondOrder<N>;
+    Eigen::Matrix<Outer, N, 1> ad;
+    for (int k = 0; k < N; ++k) {
+        typename Outer::DerType outer_derivatives;
+        for (int m = 0; m < N; ++m)
+            outer_derivatives(m) = Inner(m == k ? 1.0 : 0.0, Eigen::Matrix<double, N, 1>::Zero());
+        ad(k) = Outer(Inner(x(k), N, k), outer_derivatives);
+    }
+    static_assert(std::is_same_v<decltype(term(ad)), Outer>, "a term must return its Scalar");
+    const Outer result = term(ad);
+    LocalDerivatives<N> d;
+    d.value = result.value().value();
+    d.gradient = result.value().derivatives();
+    for (int k = 0; k < N; ++k)
+        d.hessian.row(k) = result.derivatives()(k).derivatives().transpose();
+    return d;
+}
+
+// The value only (double evaluation of the same code).
+template <int N, class Term>
+double local_value(const Term& term, const Eigen::Matrix<double, N, 1>& x)
+{
+    static_assert(std::is_same_v<decltype(term(x)), double>, "a term must return its Scalar");
+    return term(x);
+}
+
+// The coordinates of K points of a flat array (point p at rows Dim p ... Dim p + Dim - 1), in the order of
+// `points`, as one local vector.
+template <int Dim, int K>
+Eigen::Matrix<double, K * Dim, 1> gather(const Eigen::VectorXd& x, const std::array<int, K>& points)
+{
+    Eigen::Matrix<double, K * Dim, 1> local;
+    for (int k = 0; k < K; ++k)
+        local.template segment<Dim>(Dim * k) = x.template segment<Dim>(Dim * points[k]);
+    return local;
+}
+
+// Adds weight * (gradient, Hessian) of a local result into the global arrays (either may be null).
+template <int Dim, int K>
+void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& points, double weight,
+             Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
+{
+    for (int a = 0; a < K; ++a) {
+        if (gradient)
+            gradient->template segment<Dim>(Dim * points[a]) +=
+                weight * d.gradient.template segment<Dim>(Dim * a);
+        if (!hessian) continue;
+        for (int b = 0; b < K; ++b)
+            hessian->template block<Dim, Dim>(Dim * points[a], Dim * points[b]) +=
+                weight * d.hessian.template block<Dim, Dim>(Dim * a, Dim * b);
+    }
+}
+
+// Energy of one local term over `points` at local coordinates `local_x` (which may hold periodic images),
+// adding its gradient and Hessian (when asked for) into the global arrays. Returns the energy.
+// `virial`, when given, accumulates sum_k y_k F_k^T (W_ab = sum_k y_{k,a} F_{k,b}, F = -grad) over the
+// term's points at their local coordinates y_k: the force moment of eqs. (9.25)-(9.26). A term that is
+// invariant under translation has sum_k F_k = 0, so the moment does not depend on which image is used.
+template <int Dim, int K, class Term>
+double add_local_term(const Term& term, const std::array<int, K>& points,
+                      const Eigen::Matrix<double, K * Dim, 1>& local_x, Eigen::VectorXd* gradient,
+                      Eigen::MatrixXd* hessian, Eigen::Matrix<double, Dim, Dim>* virial = nullptr)
+{
+    if (virial) {
+        const auto d =
+            hessian ? local_hessian<K * Dim>(term, local_x) : local_gradient<K * Dim>(term, local_x);
+        for (int k = 0; k < K; ++k)
+            *virial -= local_x.template segment<Dim>(Dim * k) *
+                       d.gradient.template segment<Dim>(Dim * k).transpose();
+        scatter<Dim, K>(d, points, 1.0, gradient, hessian);
+        return d.value;
+    }
+    if (hessian) {
+        const auto d = local_hessian<K * Dim>(term, local_x);
+        scatter<Dim, K>(d, points, 1.0, gradient, hessian);
+        return d.value;
+    }
+    if (gradient) {
+        const auto d = local_gradient<K * Dim>(term, local_x);
+        scatter<Dim, K>(d, points, 1.0, gradient, nullptr);
+        return d.value;
+    }
+    return local_value<K * Dim>(term, local_x);
+}
+
+} // namespace softgrain::dpm

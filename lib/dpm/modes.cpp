@@ -1,0 +1,68 @@
+#include "dpm/modes.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace softgrain::dpm {
+
+Eigen::MatrixXd dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    total_energy(system, x, &g, &m);
+    return m;
+}
+
+ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dynamical_matrix(system, x));
+    return {solver.eigenvalues(), solver.eigenvectors()};
+}
+
+int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold)
+{
+    return static_cast<int>((eigenvalues.array() < threshold).count());
+}
+
+FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options)
+{
+    return fire_minimise(
+        x,
+        [&system](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+            f.setZero(y.size());
+            const double energy = total_energy(system, y, &f, nullptr);
+            f = -f;
+            return energy;
+        },
+        options);
+}
+
+double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)
+{
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    for (int step = 0; step < max_steps; ++step) {
+        g.setZero();
+        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+        total_energy(system, x, &g, &m);
+        if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+        const Eigen::VectorXd& lambda = solver.eigenvalues();
+        const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
+        const Eigen::VectorXd projected = solver.eigenvectors().transpose() * g;
+        Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
+        for (Eigen::Index k = 0; k < lambda.size(); ++k)
+            if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
+        x -= solver.eigenvectors() * step_in_modes;
+    }
+    g.setZero();
+    total_energy(system, x, &g, nullptr);
+    return g.cwiseAbs().maxCoeff();
+}
+
+double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
+                           double amplitude)
+{
+    const Eigen::VectorXd moved = x + amplitude * mode;
+    return total_energy(system, moved, nullptr, nullptr) - total_energy(system, x, nullptr, nullptr);
+}
+
+} // namespace softgrain::dpm

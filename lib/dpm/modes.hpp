@@ -1,0 +1,40 @@
+// Vibrational modes, DPM section 9.4.3: the dynamical matrix M = d^2 U / dr dr (eq. 9.28, unit vertex
+// masses) is the exact Hessian of the total energy; its eigenvalues (ascending) and unit eigenvectors come
+// from Eigen's SelfAdjointEigenSolver. Dimensionless eigenvalues lambda~ = lambda/(k_a a0) in 2D; a mode
+// with lambda~ below the threshold (1e-13 in 2D, Fig. 9.14a) counts as a zero mode.
+//
+// Also: relaxation to a mechanical equilibrium exact to round-off (needed for exact zero-mode counts: a
+// residual force f gives rotation "modes" of order f R) and the energy change along a mode (Fig. 9.14c).
+#pragma once
+
+#include "core/fire.hpp"
+#include "dpm/system.hpp"
+
+namespace softgrain::dpm {
+
+struct ModeSpectrum
+{
+    Eigen::VectorXd eigenvalues;  // ascending [E/L^2]
+    Eigen::MatrixXd eigenvectors; // columns, unit norm
+};
+
+// Eq. (9.28): the dynamical matrix of the system at x.
+Eigen::MatrixXd dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x);
+ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x);
+
+// Number of eigenvalues below the threshold (in the same units).
+int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
+
+// FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
+FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);
+
+// Newton steps x -= M^+ grad U (pseudo-inverse over eigenvalues above `zero` times the largest) until the
+// largest force component is below force_tolerance or `max_steps` is reached; returns that force.
+// Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles).
+double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
+
+// U(x + amplitude e) - U(x).
+double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
+                           double amplitude);
+
+} // namespace softgrain::dpm

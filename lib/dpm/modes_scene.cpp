@@ -1,0 +1,185 @@
+// dpm.modes: eigenvalues of the dynamical matrix (eq. 9.28) of a single particle of Table 9.1 and the
+// energy change along each mode (Figs. 9.14a, 9.14c, 9.5 single-particle analogues).
+#include "dpm/modes_scene.hpp"
+
+#include "core/errors.hpp"
+#include "core/output.hpp"
+#include "dpm/jam.hpp"
+#include "dpm/modes.hpp"
+#include "dpm/single_particle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace softgrain::dpm {
+
+namespace {
+
+// Local exponent d ln dU / d ln dr between two amplitudes; NaN where dU is at round-off level.
+double local_exponent(double du1, double du2, double dr1, double dr2, double floor)
+{
+    if (!(du1 > floor && du2 > floor)) return std::nan("");
+    return std::log(du2 / du1) / std::log(dr2 / dr1);
+}
+
+nlohmann::json median_or_null(std::vector<double> values)
+{
+    values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
+                 values.end());
+    if (values.empty()) return nullptr;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+} // namespace
+
+// Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
+// keys common to single particles and packings. Returns the number of zero modes.
+int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double threshold,
+                   RunContext& context)
+{
+    const ModeSpectrum modes = vibrational_modes(system, x);
+    const Eigen::VectorXd lambda = modes.eigenvalues / unit;
+    const int zero = count_zero_modes(lambda, threshold);
+
+    auto& spectrum =
+        context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
+                                          {"lambda", "k_a a0", "eigenvalue lambda~_k of M, eq. (9.28)"},
+                                          {"abs_lambda", "k_a a0", "|lambda~_k| (for log axes)"}});
+    for (Eigen::Index m = 0; m < lambda.size(); ++m)
+        spectrum.row({double(m + 1), lambda(m), std::abs(lambda(m))});
+
+    auto& along =
+        context.table("mode_energy.dat", {{"k", "1", "mode index"},
+                                          {"lambda", "k_a a0", "eigenvalue lambda~_k"},
+                                          {"zero_mode", "1", "1 if lambda~_k < zero_threshold"},
+                                          {"dr", "sqrt(a0)", "amplitude Delta r along the unit eigenvector"},
+                                          {"dU", "k_a a0^2", "Delta U = U(x + dr e_k) - U(x)"}});
+    const double u0 = total_energy(system, x, nullptr, nullptr);
+    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(u0));
+    std::vector<double> zero_exponents, quadratic_exponents;
+    for (Eigen::Index m = 0; m < lambda.size(); ++m) {
+        const Eigen::VectorXd e = modes.eigenvectors.col(m);
+        for (int s = 0; s <= 24; ++s) {
+            const double dr = std::pow(10.0, -3.0 + s / 8.0);
+            along.row({double(m + 1), lambda(m), lambda(m) < threshold ? 1.0 : 0.0, dr,
+                       energy_change_along(system, x, e, dr)});
+        }
+        const double exponent = local_exponent(energy_change_along(system, x, e, 1e-3),
+                                               energy_change_along(system, x, e, 2e-3), 1e-3, 2e-3, floor);
+        (lambda(m) < threshold ? zero_exponents : quadratic_exponents).push_back(exponent);
+    }
+
+    auto& s = context.summary();
+    s["zero_modes"] = zero;
+    s["lambda_smallest_nonzero"] =
+        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
+    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
+    s["lambda_max"] = lambda(lambda.size() - 1);
+    s["energy"] = u0;
+    s["zero_mode_exponent"] = median_or_null(zero_exponents);
+    s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
+    return zero;
+}
+
+// A jammed packing (dpm.jam protocol) at the requested pressure and its spectrum (Fig. 9.14b).
+void run_packing_modes(const Parameters& p, RunContext& context)
+{
+    JamOptions o;
+    o.model = p.choice("model");
+    o.particles = static_cast<int>(p.integer("particles"));
+    o.nodes_small = static_cast<int>(p.integer("nodes"));
+    o.nodes_large = o.nodes_small + 4;
+    o.pressure_onset = p.real("pressure");
+    o.pressure_max = o.pressure_onset;
+    o.pressures = 0;
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(o.seed);
+    const JamResult r = jam(o);
+    context.count_steps(r.fire_iterations);
+    const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
+    // Rattlers: particles without any contact; each carries 3 zero modes (2 translations, 1 rotation).
+    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
+    total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);
+    int rattlers = 0;
+    for (const Particle& q : r.system.particles)
+        rattlers += contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0);
+    auto& s = context.summary();
+    s["rattlers"] = rattlers;
+    s["zero_modes_without_rattlers"] = zero - 3 * rattlers;
+    s["pressure_reached"] = r.states.back().pressure;
+    s["phi"] = r.states.back().phi;
+}
+
+void run_modes(const Parameters& p, RunContext& context)
+{
+    if (p.integer("particles") > 1) {
+        run_packing_modes(p, context);
+        return;
+    }
+    const int n = static_cast<int>(p.integer("nodes"));
+    const ShapeModel model = shape_model_from_name(p.choice("model"));
+    const double a_min = minimum_shape_parameter(n);
+    const double A0 = p.real("A0") == 0 ? a_min : p.real("A0");
+    if (A0 < a_min)
+        throw InputError(
+            "A0 = " + std::to_string(A0) +
+            ": must be 0 (A_min) or >= A_min(nodes) = N tan(pi/N)/pi = " + std::to_string(a_min));
+    const double a0 = 1.0; // unit of area; k_a = 1 sets the energy unit k_a a0^2
+    ShapeStiffness k;
+    k.ka = 1.0;
+    k.kl = p.real("kl");
+    k.kb = p.real("kb");
+    k.gamma = p.real("gamma");
+    k.kl_surface = p.real("kl_surface");
+
+    const auto seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(seed);
+    const SingleParticle particle = single_particle_equilibrium(model, n, a0, A0, k, seed);
+    const DpmSystem& system = particle.system;
+    const Eigen::VectorXd& x = particle.x;
+    const double force = particle.force_max;
+    context.count_steps(particle.fire_iterations);
+
+    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context);
+    auto& s = context.summary();
+    s["zero_modes_nontrivial"] = zero - 3;
+    s["A0_used"] = A0;
+    s["A_min"] = a_min;
+    s["shape_parameter"] = shape_parameter(particle_perimeter(x, 0, n), particle_area(x, 0, n));
+    s["area"] = particle_area(x, 0, n);
+    s["force_max"] = force;
+}
+
+std::vector<ParameterSpec> modes_parameters()
+{
+    return {
+        ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension"},
+                              "particle type of Table 9.1"),
+        ParameterSpec::integer("nodes", 10, "1", "vertices N_mu of the particle").at_least(3),
+        ParameterSpec::integer(
+            "particles", 1, "1",
+            "1 = a single particle; more: a jammed bidisperse packing (dpm.jam protocol, nodes "
+            "and nodes + 4 vertices, stiffnesses of decision dpm-jam-polygons)")
+            .at_least(1),
+        ParameterSpec::real("pressure", 1e-7, "k_a a0", "packings: pressure of the analysed packing")
+            .positive(),
+        ParameterSpec::real(
+            "A0", 1.04, "1",
+            "preferred shape parameter A0 = (N l0)^2/(4 pi a0); 0 selects A_min = N tan(pi/N)/pi")
+            .non_negative(),
+        ParameterSpec::real("kl", 1.0, "k_a a0", "edge stiffness k_l (floppy, shell)").positive(),
+        ParameterSpec::real("kb", 1.0, "k_a a0^2", "bending stiffness k_b (shell)").positive(),
+        ParameterSpec::real("gamma", 0.1, "k_a a0^(3/2)", "line tension gamma (surface_tension)").positive(),
+        ParameterSpec::real("kl_surface", 0.0, "k_a a0",
+                            "edge stiffness of the surface-tension particle (Table 9.1: ~0)")
+            .non_negative(),
+        ParameterSpec::real("zero_threshold", 1e-13, "k_a a0", "zero mode: lambda~ below this (Fig. 9.14a)")
+            .positive(),
+        ParameterSpec::integer("seed", 1, "1", "seed of the random start of a floppy particle")
+            .non_negative(),
+    };
+}
+
+} // namespace softgrain::dpm

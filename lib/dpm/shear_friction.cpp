@@ -1,0 +1,121 @@
+#include "dpm/shear_friction.hpp"
+
+#include "core/errors.hpp"
+#include "core/rng.hpp"
+#include "dpm/modes.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace softgrain::dpm {
+
+double rough_friction_maximum(double C, int nodes)
+{
+    const double s = 1.0 / (C * std::sin(std::numbers::pi / nodes));
+    return 1.0 / std::sqrt(s * s - 1.0);
+}
+
+namespace {
+
+Eigen::Vector2d centre_of_mass(const Eigen::VectorXd& x, const Particle& p)
+{
+    return x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count).rowwise().mean();
+}
+
+} // namespace
+
+ShearTestResult simple_shear_test(const ShearTestOptions& o)
+{
+    const double pi = std::numbers::pi, sigma = 1.0;
+    const int n = o.nodes;
+    const double R = o.C * sigma;
+    const double half_edge = R * std::sin(pi / n);
+    if (sigma * (1 - o.overlap) <= half_edge)
+        throw InputError("C = " + std::to_string(o.C) + " with overlap = " + std::to_string(o.overlap) +
+                         ": the groove vertex would touch only one vertex; need C sin(pi/N) < 1 - overlap");
+    const double a0 = 0.5 * n * R * R * std::sin(2 * pi / n); // area of the regular N-gon
+    const double a_min = minimum_shape_parameter(n);
+    const double A0 = o.A0 == 0 ? a_min : o.A0;
+    if (A0 < a_min)
+        throw InputError("A0 = " + std::to_string(o.A0) +
+                         ": must be 0 (A_min) or >= A_min(N) = " + std::to_string(a_min));
+
+    ShapeParameters shape;
+    shape.ka = o.ka * sigma * sigma / (a0 * a0);
+    shape.a0 = a0;
+    shape.kl = o.kl;
+    shape.l0 = std::sqrt(4 * pi * a0 * A0) / n;
+    shape.kb = o.kb * sigma * sigma;
+    shape.theta0 = 2 * pi / n;
+
+    // Groove position: mu's bottom vertex at distance sigma (1 - overlap) from beta's two top vertices.
+    const double top = R * std::cos(pi / n); // height of beta's flat top edge above its centre (N even)
+    const double h = R + top + std::sqrt(std::pow(sigma * (1 - o.overlap), 2) - half_edge * half_edge);
+    ShearTestResult result;
+    DpmSystem& system = result.system;
+    system.interaction = o.interaction;
+    system.kc = 1.0;
+    Eigen::VectorXd& x = result.x;
+    const Eigen::Vector2d beta_centre(0, 0), mu_start(0, h);
+    system.add_particle(regular_polygon(n, R, beta_centre, -pi / 2 - pi / n), sigma, shape, x); // flat bottom
+    system.add_particle(regular_polygon(n, R, mu_start, -pi / 2), sigma, shape, x);             // vertex down
+    if (o.kb == 0) {
+        Rng rng(o.seed);
+        for (Eigen::Index i = 0; i < x.size(); ++i)
+            x(i) += 1e-3 * shape.l0 * rng.normal(1.0);
+    }
+    const Particle beta = system.particles[0], mu = system.particles[1];
+    const auto beta_x = x.segment(2 * beta.first, 2 * beta.count).reshaped(2, beta.count).row(0);
+    result.d_beta = beta_x.maxCoeff() - beta_x.minCoeff() + sigma; // D_beta (section 9.3.3)
+    for (int v = mu.first; v < mu.first + mu.count; ++v)
+        x(2 * v) += o.x_start * result.d_beta; // start position of mu
+    for (int v : {0, 1})
+        system.anchors.push_back({beta.first + v, x.segment<2>(2 * (beta.first + v)), o.k_constraint});
+    const int top_vertex = mu.first + n / 2;
+    for (int v : {top_vertex - 1, top_vertex, top_vertex + 1})
+        system.anchors.push_back({v, x.segment<2>(2 * v), o.k_constraint});
+    const double beta_mid = 0.5 * (system.anchors[0].position.x() + system.anchors[1].position.x());
+
+    // FIRE's velocity Verlet (unit masses) is stable for dt < 2/sqrt(lambda_max); lambda_max of the
+    // dynamical matrix at the start (shape terms and anchors dominate it) sets dt_max = 1/sqrt(lambda_max).
+    FireOptions fire;
+    const double lambda_max = vibrational_modes(system, x).eigenvalues.maxCoeff();
+    fire.dt_max = 1.0 / std::sqrt(lambda_max);
+    fire.dt_initial = 0.25 * fire.dt_max;
+    fire.force_tolerance = 1e-11;
+    const int steps = static_cast<int>(std::floor((o.x_end - o.x_start) / o.dx + 1e-9));
+    for (int step = 0; step <= steps; ++step) {
+        if (step > 0)
+            for (std::size_t a = 2; a < system.anchors.size(); ++a)
+                system.anchors[a].position.x() += o.dx * result.d_beta;
+        const FireResult relaxed = relax_fire(system, x, fire);
+        result.iterations += relaxed.iterations;
+        if (!relaxed.converged)
+            throw NumericalError("FIRE relaxation of the shear step (force rms " +
+                                     std::to_string(relaxed.force_rms) + ")",
+                                 step, "stiff shape terms against soft contacts; lower dt_max");
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+        total_energy(system, x, &g, nullptr, interaction_part);
+        const Eigen::Vector2d force =
+            -g.segment(2 * mu.first, 2 * mu.count).reshaped(2, mu.count).rowwise().sum();
+        const Eigen::Vector2d normal = (centre_of_mass(x, mu) - centre_of_mass(x, beta)).normalized();
+        const Eigen::Vector2d tangent(-normal.y(), normal.x()); // n x t = z
+        ShearSample sample;
+        sample.x_over_d = (system.anchors[3].position.x() - beta_mid) / result.d_beta;
+        sample.normal_force = force.dot(normal);
+        sample.tangential_force = force.dot(tangent);
+        sample.energy = relaxed.energy;
+        sample.iterations = relaxed.iterations;
+        if (sample.normal_force <= 0) continue; // not in contact
+        sample.mu_eff = sample.tangential_force / sample.normal_force;
+        if (result.samples.empty() || sample.mu_eff > result.mu_eff_max) {
+            result.mu_eff_max = sample.mu_eff;
+            result.x_at_max = sample.x_over_d;
+        }
+        result.samples.push_back(sample);
+    }
+    return result;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,71 @@
+// A 2D deformable-particle system: particles (contiguous ranges of a flat vertex array), their shape
+// energies (eq. 9.1), the interaction between particles (rough eq. 9.3-9.4 or smooth eq. 9.5-9.9) and
+// harmonic anchors (the constraint springs of the simple-shear test, section 9.3.3).
+//
+// State: one flat Eigen::VectorXd x, vertex v at x(2v), x(2v+1); each particle's vertices are stored
+// counter-clockwise and unwrapped. The total energy, its gradient (= minus the forces) and its Hessian
+// (the dynamical matrix of eq. 9.28 for unit masses) are all assembled from the same local terms.
+#pragma once
+
+#include "dpm/shape_energy.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace softgrain::dpm {
+
+enum class InteractionKind { none, rough, smooth };
+InteractionKind interaction_from_name(const std::string& name); // "rough" | "smooth"
+
+struct Particle
+{
+    int first = 0;    // index of its first vertex
+    int count = 0;    // number of vertices N_mu
+    double sigma = 0; // vertex diameter sigma_mu [L]
+    ShapeParameters shape;
+};
+
+// Harmonic constraint k/2 |r_v - r0|^2 on one vertex (U^constraint of section 9.3.3 with k = k_constraint).
+struct Anchor
+{
+    int vertex = 0;
+    Eigen::Vector2d position = Eigen::Vector2d::Zero();
+    double k = 0;
+};
+
+struct DpmSystem
+{
+    std::vector<Particle> particles;
+    InteractionKind interaction = InteractionKind::none;
+    double kc = 1.0; // contact stiffness k_c [E/L^2]
+    std::vector<Anchor> anchors;
+    // Sides (L_x, L_y) of a periodic rectangular box (minimum image between particles); absent: open space.
+    // Particles are kept whole (unwrapped); the box must exceed twice the reach of any particle pair.
+    std::optional<Eigen::Vector2d> box;
+
+    int vertex_count() const
+    {
+        return particles.empty() ? 0 : particles.back().first + particles.back().count;
+    }
+    // Appends a particle with the given vertices (2 x n, counter-clockwise).
+    void add_particle(const Eigen::Matrix2Xd& vertices, double sigma, const ShapeParameters& shape,
+                      Eigen::VectorXd& x);
+};
+
+// Parts of the total energy, so that each can be evaluated alone.
+enum EnergyPart : unsigned { shape_part = 1u, interaction_part = 2u, anchor_part = 4u, all_parts = 7u };
+
+// Total energy of the parts selected; adds the gradient and the Hessian when they are given.
+double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                    Eigen::MatrixXd* hessian, unsigned parts = all_parts);
+
+// Minimum image of a separation in a periodic rectangular box of sides L = (L_x, L_y).
+inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vector2d& L)
+{
+    return d - (L.array() * (d.array() / L.array()).round()).matrix();
+}
+
+// Vertices of a regular n-gon of circumradius r centred at c, counter-clockwise, vertex 0 at angle phase.
+Eigen::Matrix2Xd regular_polygon(int n, double r, const Eigen::Vector2d& c, double phase);
+
+} // namespace softgrain::dpm
