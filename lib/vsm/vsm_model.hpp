@@ -42,7 +42,8 @@ struct BoundaryConditions
 
 enum class InternalForce {
     eq43, // angular-momentum-preserving form, eq. (43)
-    eq42  // pairwise form (42) = (41) in the interior, with reactions: the static form of section 3.3
+    eq41  // eq. (41) in its pairwise form (42), valid also at boundaries, with reactions: the static form
+          // of 3.3
 };
 
 struct Material
