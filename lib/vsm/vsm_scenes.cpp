@@ -46,6 +46,7 @@ void run_patch(const Parameters& p, RunContext& context)
     context.count_steps(r.steps);
     auto& out = context.summary();
     out["max_error"] = r.max_error;
+    out["test_id"] = static_cast<int>(s.variant) + 1; // 1 = A, 2 = B, 3 = C (numeric, for tables)
     out["max_error_unit"] = s.variant == PatchVariant::A ? "N" : "m";
     // Relative error: to the typical particle force E alpha h^2 (A) or to the largest exact displacement (B,
     // C).
