@@ -36,7 +36,8 @@ Leapfrog::Leapfrog(const Model& model, const Points<3>& x0, const Points<3>& v0,
 
 Eigen::VectorXd Leapfrog::force_flat(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double t)
 {
-    Eigen::VectorXd f = flatten(model_.forces(unflatten(x), t, state_.step));
+    const Points<3> velocities = unflatten(v);
+    Eigen::VectorXd f = flatten(model_.forces(unflatten(x), t, state_.step, &velocities));
     if (!f.allFinite())
         throw NumericalError("non-finite force", state_.step,
                              "time step above the stability limit dt ~ h / c_p");

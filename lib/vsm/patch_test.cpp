@@ -30,7 +30,7 @@ PatchResult run_patch_test(const PatchSetup& s)
     const auto ramp = [&](double t) { return static_test ? 1.0 : std::min(t / s.ramp_time, 1.0); };
 
     BoundaryConditions bc;
-    bc.displacement = [&](const Vec3& W, double t) { return Vec3(ramp(t) * (G * W)); };
+    bc.displacement = [&](int, const Vec3& W, double t) { return Vec3(ramp(t) * (G * W)); };
     if (s.variant == PatchVariant::C) {
         bc.kind.assign(6, BoundaryKind::free);
         bc.kind[4] = BoundaryKind::total; // X3 = 0

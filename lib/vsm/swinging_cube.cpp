@@ -41,7 +41,7 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s)
     // zero.
     bc.kind = {BoundaryKind::symmetric,     BoundaryKind::antisymmetric, BoundaryKind::symmetric,
                BoundaryKind::antisymmetric, BoundaryKind::symmetric,     BoundaryKind::antisymmetric};
-    bc.displacement = [](const Vec3&, double) { return Vec3::Zero(); };
+    bc.displacement = [](int, const Vec3&, double) { return Vec3::Zero(); };
     const Model model(build_reference_cells(X, domain, 2.0 * L / n), domain, bc, s.cube.material, s.options);
 
     Points<3> x0 = X;

@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace softgrain::vsm {
@@ -86,8 +87,11 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
         const double V = cells_.volume[ua];
         mass_[ua] = material_.density * V;
         const int m = static_cast<int>(list.size());
+        double shortest = std::numeric_limits<double>::infinity();
         for (const auto& nb : list)
-            min_branch_ = std::min(min_branch_, nb.length);
+            shortest = std::min(shortest, nb.length);
+        min_branch_of_.push_back(shortest);
+        min_branch_ = std::min(min_branch_, shortest);
 
         // Ghosts and their projections D_ab, eq. (14).
         free_rows_[ua].assign(static_cast<std::size_t>(m), -1);
@@ -177,10 +181,10 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
     }
 }
 
-Vec3 Model::prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, double t) const
+Vec3 Model::prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label, double t) const
 {
     // xbar_ab = 2 (W_ab + ubar_ab - x_a), section 2.4.
-    return 2.0 * (nb.boundary_point + bc_.displacement(nb.boundary_point, t) - x.col(a));
+    return 2.0 * (nb.boundary_point + bc_.displacement(label, nb.boundary_point, t) - x.col(a));
 }
 
 std::vector<Vec3> Model::ghost_branches(const Points<3>& x, int a, double t) const
@@ -192,7 +196,7 @@ std::vector<Vec3> Model::ghost_branches(const Points<3>& x, int a, double t) con
     for (const Ghost& g : ghosts_[ua])
         if (g.kind != BoundaryKind::free)
             prescribed[static_cast<std::size_t>(g.slot)] =
-                prescribed_branch(x, a, list[static_cast<std::size_t>(g.slot)], t);
+                prescribed_branch(x, a, list[static_cast<std::size_t>(g.slot)], g.label, t);
     for (const Ghost& g : ghosts_[ua]) {
         const auto k = static_cast<std::size_t>(g.slot);
         if (g.kind == BoundaryKind::total) {
@@ -235,7 +239,51 @@ std::vector<Mat3> Model::deformation_gradients(const Points<3>& x, double t) con
     return F;
 }
 
-Points<3> Model::forces(const Points<3>& x, double t, long step) const
+Mat3 Model::deformation_rate(const Points<3>& x, const Points<3>& v, int a, double t) const
+{
+    const auto ua = static_cast<std::size_t>(a);
+    Mat3 rate = Mat3::Zero();
+    for (const JacobianTerm& term : full_jacobian_[ua]) {
+        const Eigen::Matrix<double, 9, 1> column = term.block * v.col(term.particle);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                rate(i, j) += column[3 * i + j];
+    }
+    bool prescribed = false;
+    for (const Ghost& g : ghosts_[ua])
+        prescribed = prescribed || g.kind != BoundaryKind::free;
+    if (prescribed) {
+        // F_a is affine in the prescribed displacements; their time derivative by a central difference.
+        const double delta = 1e-6;
+        rate += (deformation_gradient(x, a, t + delta) - deformation_gradient(x, a, t - delta)) / (2 * delta);
+    }
+    return rate;
+}
+
+Mat3 Model::viscous_stress(const Mat3& F, const Mat3& F_rate, int a) const
+{
+    const Mat3 F_inv = F.inverse();
+    const Mat3 L = F_rate * F_inv;
+    const Mat3 d = 0.5 * (L + L.transpose());
+    const double h = min_branch_of_[static_cast<std::size_t>(a)];
+    const Mat3 sigma =
+        material_.density *
+        (options_.c1 * material_.p_wave_speed() * h + options_.c2 * h * h * std::abs(d.trace())) * d;
+    return F.determinant() * sigma * F_inv.transpose();
+}
+
+std::vector<double> Model::pressures(const Points<3>& x, double t) const
+{
+    const LameParameters lame = material_.lame();
+    std::vector<double> p;
+    for (const Mat3& F : deformation_gradients(x, t)) {
+        const Mat3 sigma = neo_hookean_stress(F, lame) * F.transpose() / F.determinant();
+        p.push_back(-sigma.trace() / 3.0);
+    }
+    return p;
+}
+
+Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>* v) const
 {
     const int n = static_cast<int>(size());
     const LameParameters lame = material_.lame();
@@ -252,6 +300,9 @@ Points<3> Model::forces(const Points<3>& x, double t, long step) const
                 "above the stability limit, or missing stabilisation (xi = 0)");
         }
         P[static_cast<std::size_t>(a)] = neo_hookean_stress(F[static_cast<std::size_t>(a)], lame); // eq. (48)
+        if (v && (options_.c1 > 0 || options_.c2 > 0))
+            P[static_cast<std::size_t>(a)] +=
+                viscous_stress(F[static_cast<std::size_t>(a)], deformation_rate(x, *v, a, t), a); // eq. (51)
     }
 
     Points<3> f = Points<3>::Zero(3, n);

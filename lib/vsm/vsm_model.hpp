@@ -33,9 +33,9 @@ Mat3 boundary_projection(BoundaryKind kind, const Vec3& normal); // D_ab, eq. (1
 struct BoundaryConditions
 {
     std::vector<BoundaryKind> kind; // per face label
-    // Prescribed displacement u_bar(W, t) of a boundary point W [m] (components selected by D); may be empty
-    // when no face prescribes a displacement.
-    std::function<Vec3(const Vec3& W, double t)> displacement;
+    // Prescribed displacement u_bar(label, W, t) of a boundary point W on a face with that label [m]
+    // (components selected by D); may be empty when no face prescribes a displacement.
+    std::function<Vec3(int label, const Vec3& W, double t)> displacement;
     // Nominal traction T_bar(label, W, t) [Pa] on free faces, eq. (39); empty for traction-free surfaces.
     std::function<Vec3(int label, const Vec3& W, double t)> traction;
 };
@@ -60,6 +60,7 @@ struct ModelOptions
 {
     InternalForce internal = InternalForce::eq43;
     double xi_n = 1, xi_t = 1; // contact factors of eq. (50)
+    double c1 = 0, c2 = 0;     // artificial viscosity constants of eq. (51); 0 = off
 };
 
 using Block93 = Eigen::Matrix<double, 9, 3>;
@@ -91,7 +92,15 @@ class Model
 
     // Forces [N] on every particle at positions x and time t: internal + reactions + tractions (+ contact
     // when xi > 0). `step` is reported in a NumericalError when some J_a <= 0.
-    Points<3> forces(const Points<3>& x, double t, long step = 0) const;
+    // With velocities v (and c1 or c2 > 0) the artificial viscous stress of eq. (51) is added to P_a.
+    Points<3> forces(const Points<3>& x, double t, long step = 0, const Points<3>* v = nullptr) const;
+    // Rate of F_a: sum_c dF_a/dx_c v_c + dF_a/dt (prescribed boundary motion).
+    Mat3 deformation_rate(const Points<3>& x, const Points<3>& v, int a, double t) const;
+    // Artificial viscous first Piola-Kirchhoff stress P_visc = J sigma F^-T, sigma = rho (c1 c_p h + c2 h^2
+    // |tr d|) d, d = sym(Fdot F^-1), h = shortest reference branch vector of a (eq. (51), section 4). Pa.
+    Mat3 viscous_stress(const Mat3& F, const Mat3& F_rate, int a) const;
+    // Cauchy pressure p_a = -tr(sigma_a)/3 with sigma_a = P_a F_a^T / J_a (elastic part), Pa.
+    std::vector<double> pressures(const Points<3>& x, double t) const;
     // The contact forces alone (eq. (46)) and the energies V^int (eq. (33)) and V^cnt (eq. (34)).
     Points<3> contact_forces(const Points<3>& x, const std::vector<Mat3>& F, double t) const;
     double internal_energy(const Points<3>& x, double t) const;
@@ -108,7 +117,7 @@ class Model
         BoundaryKind kind;
         Mat3 D; // eq. (14)
     };
-    Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb,
+    Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label,
                            double t) const; // xbar_ab, section 2.4
 
     ReferenceCells cells_;
@@ -117,6 +126,7 @@ class Model
     ModelOptions options_;
     std::vector<double> mass_;
     double min_branch_ = 0;
+    std::vector<double> min_branch_of_;       // per particle, for eq. (51)
     std::vector<std::vector<Ghost>> ghosts_;  // per particle: its ghost neighbours
     std::vector<Eigen::MatrixXd> K_prime_;    // per particle: rows E''_a, columns P'_a, eq. (22)
     std::vector<std::vector<int>> free_rows_; // per particle: slot -> row of K' (or -1)

@@ -5,8 +5,10 @@
 #include "core/output.hpp"
 #include "vsm/l_block.hpp"
 #include "vsm/patch_test.hpp"
+#include "vsm/punch.hpp"
 #include "vsm/swinging_cube.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <numbers>
@@ -145,6 +147,53 @@ void run_l_block_scene(const Parameters& p, RunContext& context)
     out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
 }
 
+void run_punch_scene(const Parameters& p, RunContext& context)
+{
+    PunchSetup s;
+    const int n = static_cast<int>(p.integer("per_side"));
+    if ((2 * n - 1) % 3 != 0)
+        throw InputError(
+            "per_side = " + std::to_string(n) +
+            " gives 2 per_side - 1 particles across the width, which must be divisible by 3 (the "
+            "punch covers the middle third): use 2, 5, 8, 11, 14, ...");
+    s.counts = {2 * n - 1, n, static_cast<int>(p.integer("per_side_thickness"))};
+    s.jitter = p.choice("arrangement") == "irregular" ? p.real("jitter") : 0.0;
+    s.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    s.material = {p.real("E"), p.real("nu"), p.real("rho")};
+    s.options = {internal_force_choice(p), p.real("xi"), p.real("xi"), p.real("c1"), p.real("c2")};
+    s.punch_velocity = p.real("punch_velocity");
+    s.snapshot_strains = {0.5 * p.real("final_strain"), p.real("final_strain")};
+    s.cfl = p.real("cfl");
+    context.record_seed(s.seed);
+    auto& snapshots = context.table("snapshots.dat", {{"strain", "1", "punch displacement / height"},
+                                                      {"x1", "m", "current position"},
+                                                      {"x2", "m", ""},
+                                                      {"x3", "m", ""},
+                                                      {"pressure", "Pa", "Cauchy pressure -tr(sigma)/3"}});
+    std::vector<PunchSnapshot> taken;
+    const auto start = std::chrono::steady_clock::now();
+    const PunchResult r = run_punch(s, [&](const PunchSnapshot& q) { taken.push_back(q); });
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    context.count_steps(r.steps);
+    auto& out = context.summary();
+    const char* tags[] = {"half", "final"};
+    for (std::size_t k = 0; k < taken.size(); ++k) {
+        const PunchSnapshot& q = taken[k];
+        for (Eigen::Index a = 0; a < q.x.cols(); ++a) {
+            snapshots.row(
+                {q.strain, q.x(0, a), q.x(1, a), q.x(2, a), q.pressure[static_cast<std::size_t>(a)]});
+        }
+        const std::string tag = tags[k];
+        out["punch_force_" + tag] = q.punch_force;
+        out["nonaffine_ratio_" + tag] = q.nonaffine_ratio;
+        out["pressure_roughness_" + tag] = q.pressure_roughness;
+        out["pressure_max_" + tag] = *std::max_element(q.pressure.begin(), q.pressure.end());
+    }
+    out["particles"] = r.particles;
+    out["dt"] = r.dt;
+    out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
+}
+
 } // namespace
 
 void register_vsm_scenes(SceneRegistry& registry)
@@ -227,6 +276,41 @@ void register_vsm_scenes(SceneRegistry& registry)
             ParameterSpec::real("cfl", 0.3, "1", "time step dt = cfl L_min / c_p").positive().at_most(2.0),
         },
         run_l_block_scene,
+    });
+    registry.add(Scene{
+        "vsm.punch",
+        "VSM punch test (Frenning Figs. 9-10): rigid punch on the middle third, stabilisation xi, pressure "
+        "field",
+        {
+            ParameterSpec::integer(
+                "per_side", 11, "1",
+                "particles over the height; (2 per_side - 1) over the width (21 x 11 in the paper)")
+                .at_least(2),
+            ParameterSpec::integer("per_side_thickness", 3, "1", "particles over the thickness").at_least(1),
+            ParameterSpec::choice("arrangement", "regular", {"regular", "irregular"},
+                                  "regular cell-centred lattice, or jittered by `jitter` of the spacing"),
+            ParameterSpec::real("jitter", 0.2, "1", "irregular arrangement: jitter fraction")
+                .non_negative()
+                .below(0.5),
+            ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative(),
+            ParameterSpec::real("E", 1.0e6, "Pa", "Young's modulus").positive(),
+            ParameterSpec::real("nu", 0.45, "1", "Poisson's ratio").at_least(-0.99).below(0.5),
+            ParameterSpec::real("rho", 1.0e3, "kg/m^3", "density").positive(),
+            ParameterSpec::real("xi", 1.0, "1", "contact (stabilisation) factors xi_n = xi_t of eq. (50)")
+                .non_negative(),
+            ParameterSpec::real("c1", 0.1, "1", "artificial viscosity, linear term of eq. (51)")
+                .non_negative(),
+            ParameterSpec::real("c2", 0.1, "1", "artificial viscosity, quadratic term of eq. (51)")
+                .non_negative(),
+            internal_force_parameter("eq43"),
+            ParameterSpec::real("punch_velocity", 0.1, "m/s", "downward punch velocity").positive(),
+            ParameterSpec::real("final_strain", 0.3, "1",
+                                "punch displacement / height at the end; snapshots at half and at the end")
+                .positive()
+                .below(1.0),
+            ParameterSpec::real("cfl", 0.3, "1", "time step dt = cfl L_min / c_p").positive().at_most(2.0),
+        },
+        run_punch_scene,
     });
 }
 

@@ -1,5 +1,6 @@
 // VSM forces as derivatives of the discrete potential (Frenning 2022, eqs. (38), (40), (43), (46), Appendix
 // C) and the conservation laws that follow (section 3.3).
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "support/tolerance.hpp"
 #include "vsm/particle_layouts.hpp"
@@ -8,6 +9,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <limits>
+#include <string>
 
 using namespace softgrain;
 using namespace softgrain::vsm;
@@ -80,8 +83,11 @@ TEST_CASE(
              {K::total, K::total, K::total, K::total, K::total, K::total},
              {K::symmetric, K::antisymmetric, K::symmetric, K::antisymmetric, K::symmetric, K::antisymmetric},
              {K::symmetric, K::free, K::antisymmetric, K::total, K::free, K::symmetric}}) {
-        BoundaryConditions bc{
-            kinds, [](const Vec3& W, double) { return Vec3(1e-3 * W.y(), 0, -2e-3 * W.x()); }, {}};
+        BoundaryConditions bc{kinds,
+                              [](int label, const Vec3& W, double) {
+                                  return Vec3(1e-3 * W.y() * (label + 1), 0, -2e-3 * W.x());
+                              },
+                              {}};
         const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, bc, rubber,
                           {InternalForce::eq43, 1, 1});
         const Points<3> f = model.contact_forces(s.x, model.deformation_gradients(s.x, 0.0), 0.0);
@@ -119,4 +125,47 @@ TEST_CASE(
     CHECK_CLOSE(torque_43, 0.0, (Tolerance{0, 20 * round_off}));
     // ... eq. (41)/(42) at free boundaries does not (section 3.3): a torque far above rounding.
     CHECK(torque_42 > 1e6 * round_off);
+}
+
+TEST_CASE(
+    "an inverted particle (J <= 0) is a numerical failure, never continued [VSM eq. (48) requires J > 0]")
+{
+    const Setup s = deformed_cube(44, 0.0);
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber, {});
+    Points<3> x = s.X;
+    x.row(0) *= -1.0; // a reflection: F_a = diag(-1, 1, 1), J = -1 for every particle
+    try {
+        model.forces(x, 0.0, 7);
+        FAIL("no NumericalError for J < 0");
+    } catch (const NumericalError& e) {
+        CHECK(std::string(e.what()).find("J = det F_a") != std::string::npos);
+        CHECK(e.step == 7);
+    }
+}
+
+TEST_CASE("artificial viscous stress vanishes for rigid rotation and is rho c1 c_p h d for dilatation [VSM "
+          "eq. (51)]")
+{
+    const Setup s = deformed_cube(45, 0.0);
+    ModelOptions options{InternalForce::eq43, 1, 1, 0.1, 0.1};
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber,
+                      options);
+    Mat3 W;
+    W << 0, -0.3, 0.2, 0.3, 0, -0.1, -0.2, 0.1, 0; // spin
+    const Points<3> spin = W * s.X;
+    const Points<3> expansion = 0.05 * s.X; // d = 0.05 I
+    for (int a = 0; a < static_cast<int>(model.size()); ++a) {
+        const Mat3 F = Mat3::Identity();
+        // F_a and its rate are exact for linear fields (eq. (6)), so d = sym(W) = 0 to rounding.
+        const Mat3 rotation = model.viscous_stress(F, model.deformation_rate(s.X, spin, a, 0.0), a);
+        CHECK_CLOSE(rotation.norm(), 0.0, (Tolerance{0, 1e-9})); // Pa; the dilatation case below is ~1e3 Pa
+        const Mat3 P = model.viscous_stress(F, model.deformation_rate(s.X, expansion, a, 0.0), a);
+        double h = std::numeric_limits<double>::infinity();
+        for (const Neighbour& nb : model.cells().neighbours[static_cast<std::size_t>(a)])
+            h = std::min(h, nb.length);
+        const double expected =
+            rubber.density * (0.1 * rubber.p_wave_speed() * h + 0.1 * h * h * 0.15) * 0.05; // |tr d| = 0.15
+        CHECK_CLOSE(P(0, 0), expected, (Tolerance{1e-12, 0})); // rounding of the linear map
+        CHECK_CLOSE(P(0, 1), 0.0, (Tolerance{0, 1e-12 * expected}));
+    }
 }
