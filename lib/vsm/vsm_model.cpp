@@ -233,7 +233,7 @@ Mat3 Model::deformation_gradient(const Points<3>& x, int a, double t) const
 std::vector<Mat3> Model::deformation_gradients(const Points<3>& x, double t) const
 {
     std::vector<Mat3> F(size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (size() > 4000) // threads pay off only for large sets
     for (int a = 0; a < static_cast<int>(size()); ++a)
         F[static_cast<std::size_t>(a)] = deformation_gradient(x, a, t);
     return F;
