@@ -156,7 +156,7 @@ void run_punch_scene(const Parameters& p, RunContext& context)
             "per_side = " + std::to_string(n) +
             " gives 2 per_side - 1 particles across the width, which must be divisible by 3 (the "
             "punch covers the middle third): use 2, 5, 8, 11, 14, ...");
-    s.counts = {2 * n - 1, n, static_cast<int>(p.integer("per_side_thickness"))};
+    s.counts = {2 * n - 1, n, static_cast<int>(p.integer("layers"))};
     s.jitter = p.choice("arrangement") == "irregular" ? p.real("jitter") : 0.0;
     s.seed = static_cast<std::uint64_t>(p.integer("seed"));
     s.material = {p.real("E"), p.real("nu"), p.real("rho")};
@@ -286,7 +286,7 @@ void register_vsm_scenes(SceneRegistry& registry)
                 "per_side", 11, "1",
                 "particles over the height; (2 per_side - 1) over the width (21 x 11 in the paper)")
                 .at_least(2),
-            ParameterSpec::integer("per_side_thickness", 3, "1", "particles over the thickness").at_least(1),
+            ParameterSpec::integer("layers", 3, "1", "particles over the thickness").at_least(1),
             ParameterSpec::choice("arrangement", "regular", {"regular", "irregular"},
                                   "regular cell-centred lattice, or jittered by `jitter` of the spacing"),
             ParameterSpec::real("jitter", 0.2, "1", "irregular arrangement: jitter fraction")
