@@ -189,6 +189,7 @@ void run_punch_scene(const Parameters& p, RunContext& context)
         out["pressure_roughness_" + tag] = q.pressure_roughness;
         out["pressure_max_" + tag] = *std::max_element(q.pressure.begin(), q.pressure.end());
     }
+    out["jitter"] = s.jitter; // effective: 0 for the regular arrangement
     out["particles"] = r.particles;
     out["dt"] = r.dt;
     out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
