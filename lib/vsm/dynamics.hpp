@@ -1,0 +1,44 @@
+// Time integration of VSM (Frenning 2022, section 5): leapfrog (core/integrators.hpp) with optional
+// mass-proportional viscous damping f -= c m_a v_a for equilibrium problems (the paper's damping of [22] is
+// not specified; see data/vsm/decisions.toml, damping).
+#pragma once
+
+#include "vsm/vsm_model.hpp"
+
+#include <Eigen/Core>
+
+namespace softgrain::vsm {
+
+struct LeapfrogState
+{
+    Eigen::VectorXd x; // positions, 3 per particle (column-major Points<3>)
+    Eigen::VectorXd v; // velocities at t - dt/2
+    double t = 0;
+    long step = 0;
+};
+
+class Leapfrog
+{
+  public:
+    // Starts at positions x0 with velocities v0 at t0: v(t0 - dt/2) = v0 - dt/2 a(t0) (second-order start).
+    Leapfrog(const Model& model, const Points<3>& x0, const Points<3>& v0, double dt, double damping,
+             double t0 = 0);
+
+    void step();
+    const LeapfrogState& state() const { return state_; }
+    Points<3> positions() const;
+    // Half-step velocities v(t - dt/2). With them sum_a m_a x_a(t) x v_a(t - dt/2) is exactly conserved by
+    // leapfrog when the forces exert no net torque (and sum_a m_a v_a when they have no resultant).
+    Points<3> half_step_velocities() const;
+    double dt() const { return dt_; }
+
+  private:
+    Eigen::VectorXd force_flat(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double t);
+
+    const Model& model_;
+    LeapfrogState state_;
+    Eigen::VectorXd inverse_mass_, mass_;
+    double dt_, damping_;
+};
+
+} // namespace softgrain::vsm

@@ -1,0 +1,49 @@
+// Swinging cube (Frenning 2022, section 6.2, eq. (53), Fig. 5).
+//
+// Unit cube 0 <= X_i <= L, symmetric BCs (normal motion fixed) on X_i = 0, antisymmetric BCs (tangential
+// motion fixed) on X_i = L. Exact solution of *linear* elastodynamics, eq. (53):
+//   u = cos(omega t) [U1 sin(k X1) cos(k X2) cos(k X3); U2 cos sin cos; U3 cos cos sin],
+//   k = pi/(2L), omega = sqrt(3) k c_s, c_s = sqrt(mu/rho), valid for U1 + U2 + U3 = 0 (div u = 0).
+// The run starts from u(X, 0), v = 0, and reports the normalised L2 error of the particle displacements at
+// t_end.
+#pragma once
+
+#include "vsm/vsm_model.hpp"
+
+#include <cstdint>
+
+namespace softgrain::vsm {
+
+struct SwingingCube
+{
+    double length = 1.0;                     // L [m]
+    Vec3 amplitude{5.0e-4, 5.0e-4, -1.0e-3}; // U1, U2, U3 [m]
+    Material material{17.0e6, 0.45, 1.1e3};
+    double wave_number() const;                       // k = pi / (2 L) [1/m]
+    double angular_frequency() const;                 // omega = sqrt(3) k c_s [rad/s]
+    Vec3 displacement(const Vec3& X, double t) const; // eq. (53) [m]
+};
+
+struct SwingingCubeSetup
+{
+    SwingingCube cube;
+    int per_side = 8;
+    double jitter = 0.1;
+    std::uint64_t seed = 1;
+    ModelOptions options{InternalForce::eq43, 1.0, 1.0};
+    double end_time = 5e-3; // s
+    double cfl = 0.3;
+};
+
+struct SwingingCubeResult
+{
+    double displacement_error_l2 = 0; // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2)
+    double spacing = 0;               // mean particle spacing L / per_side [m]
+    double dt = 0;
+    long steps = 0;
+    int particles = 0;
+};
+
+SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup);
+
+} // namespace softgrain::vsm
