@@ -89,7 +89,9 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     bottom << 3 * R, -3 * R, -R - r, -R - r;
     const int top_wall = model.add_shell(top, wall, 1.0);
     const int bottom_wall = model.add_shell(bottom, wall, 1.0);
-    model.set_contact_law({sc.laws.k_s, 0.0, 0.0}); // decision spd-ring-walls: k_n = k_s, frictionless
+    // Decisions spd-ring-walls and spd-contact-damping: k_n = k_s, frictionless, normal damping critical for
+    // a vertex on the wall, 2 sqrt(m k_n).
+    model.set_contact_law({sc.laws.k_s, 0.0, 0.0, 2 * std::sqrt(setup.vertex_mass * sc.laws.k_s)});
     const double A0 = model.area(ring);
 
     CompressionResult result;
@@ -99,10 +101,15 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     const double damping = 2 * setup.vertex_mass * omega2;
     const double force_scale = std::min(sc.flexural_rigidity / (R * R), sc.characteristic.F_2star);
     const double tolerance = relax_tolerance * force_scale;
-    const long max_relax = static_cast<long>(400 * 2 * pi / (omega2 * result.dt));
-    // Wall speed: the strain step is applied over two ovalisation periods.
-    const double move_time = 2 * 2 * pi / omega2;
+
+    // Wall speed: the strain step is applied over two ovalisation periods, lengthened by
+    // sqrt(EI/R^2 / F**) for a plastic ring so that inertial forces stay small against F** (decision
+    // spd-ring-loading-rate).
+    const double slow_down =
+        std::sqrt(std::max(1.0, sc.flexural_rigidity / (R * R) / sc.characteristic.F_2star));
+    const double move_time = 2 * 2 * pi / omega2 * slow_down;
     const int move_steps = std::max(1, static_cast<int>(move_time / result.dt));
+    const long max_relax = static_cast<long>(400 * slow_down * 2 * pi / (omega2 * result.dt));
 
     double gap = b0; // wall gap of the mid-line
     const auto record = [&](bool loading) {
@@ -134,8 +141,10 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
         s.bending_energy = model.bending_energy();
         s.core_pressure = model.core_pressure(ring);
         const double x_centre = first < 0 ? 0.0 : 0.5 * (x_first + x_last);
-        for (int i = sh.first; i < sh.first + sh.count; ++i) {
-            if (model.vertex(i).y() <= ycentre || model.contact_normal(i) <= 0) continue;
+        // The profile covers the whole contact extent, vertices without force included.
+        for (int i = sh.first; i < sh.first + sh.count && first >= 0; ++i) {
+            const double x = model.vertex(i).x();
+            if (model.vertex(i).y() <= ycentre || x < x_first - 1e-9 * R || x > x_last + 1e-9 * R) continue;
             s.profile_x.push_back(model.vertex(i).x() - x_centre);
             s.profile_pressure.push_back(model.contact_normal(i) / (setup.material.s * sc.l0));
         }

@@ -162,13 +162,14 @@ void ShellModel::contact_forces(double dt)
                     const bool last_end = !sq.closed && k == sq.elements() - 1;
                     if (prox.branch == SegmentBranch::end_b && !last_end)
                         continue; // counted with element k+1
-                    const double fn = normal_contact_force(contact_.k_n, prox.distance, reach);
                     const auto w = transfer_weights(std::clamp(prox.a, 0.0, prox.length), prox.length);
+                    const Vec2 v_rel =
+                        v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
+                    const double fn = std::max(0.0, normal_contact_force(contact_.k_n, prox.distance, reach) -
+                                                        contact_.normal_damping * v_rel.dot(prox.normal));
                     Vec2 F = fn * prox.normal;
                     if (contact_.mu > 0) {
                         const Vec2 t(prox.normal.y(), -prox.normal.x()); // t = n x z (section 2.3)
-                        const Vec2 v_rel =
-                            v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
                         const auto key = std::make_pair(i, a);
                         const auto old = friction_.find(key);
                         const double ft =

@@ -43,6 +43,10 @@ struct ContactLaw
     double k_n = 0; // [N/m]
     double k_t = 0; // [N/m]
     double mu = 0;  // friction coefficient
+    // Normal viscous damping c_n [N s/m] for quasi-static relaxation only (decision spd-contact-damping): a
+    // force -c_n (v_rel . n) while in contact, the total normal force kept repulsive. It vanishes at rest and
+    // removes the chatter of a vertex at the edge of a flat contact (not part of eq. (6)).
+    double normal_damping = 0;
 };
 
 class ShellModel

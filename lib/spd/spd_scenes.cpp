@@ -9,6 +9,7 @@
 
 #include <gsl/gsl_fit.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -67,6 +68,7 @@ void run_beam(const Parameters& p, RunContext& ctx)
     s["ratio"] = r.deflection_max / theory;
     s["ratio_discrete_theory"] = beam_discrete_ratio(b.support, b.nodes);
     s["inverse_nodes"] = 1.0 / b.nodes;
+    s["support_index"] = b.support == BeamSupport::cantilever ? 0 : 1;
     s["dt"] = r.dt;
     s["dt_critical"] = r.critical_time_step;
 }
@@ -144,8 +146,8 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
          {"elastica_Lc_over_b0", "1", "elastica flat length 2c/b0"},
          {"elastica_V_over_V0", "1", "elastica area ratio"},
          {"elastica_F_over_Fstar", "1", "elastica force F/F* = (F R^2/EI)(EI/(k_b R)), EI = k_b l0"}});
-    std::vector<double> eps_late, lc_late, lc_over_l, f_ratio;
-    double volume_deviation = 0;
+    std::vector<double> eps_late, lc_late, lc_late_elastica, lc_over_l, f_ratio;
+    double volume_deviation = 0, el_volume_deviation = 0, err_a = 0, err_V = 0, err_F = 0, err_Lc = 0;
     for (const CompressionState& st : r.states) {
         ElasticaState el{};
         if (elastica) el = elastica_ring_between_plates(st.strain);
@@ -161,7 +163,24 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
              elastica ? el.force * sc.flexural_rigidity / (F_star * setup.radius * setup.radius) : nan});
         if (!st.loading) continue;
         volume_deviation = std::max(volume_deviation, std::abs(st.volume - (1 - st.strain * st.strain)));
-        if (st.strain > 0.3 - 1e-9) eps_late.push_back(st.strain), lc_late.push_back(st.contact_length);
+        if (st.strain > 0.3 - 1e-9) {
+            eps_late.push_back(st.strain), lc_late.push_back(st.contact_length);
+            lc_late_elastica.push_back(el.contact_length);
+        }
+        if (elastica && st.strain > 0) {
+            el_volume_deviation =
+                std::max(el_volume_deviation, std::abs(el.volume - (1 - st.strain * st.strain)));
+            err_a = std::max(err_a, std::abs(st.width / el.width - 1));
+            err_V = std::max(err_V, std::abs(st.volume - el.volume));
+            const double F_el = el.force * sc.flexural_rigidity / (setup.radius * setup.radius);
+            if (st.strain >= 0.05 - 1e-9) err_F = std::max(err_F, std::abs(st.wall_force / F_el - 1));
+            // L_c = N' l0 against the flat length 2c: N' vertices span (N' - 1) l0 (decision
+            // spd-Lc-definition).
+            if (st.contact_vertices > 0)
+                err_Lc = std::max(
+                    err_Lc,
+                    std::abs((st.contact_vertices - 1) * l - el.contact_length * 2 * setup.radius) / l);
+        }
         if (st.contact_vertices > 0) {
             lc_over_l.push_back(st.contact_vertices);
             f_ratio.push_back(plastic ? F2 : st.wall_force / F_star);
@@ -205,6 +224,30 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
         s["elastica_V_over_V0_final"] = el.volume;
         s["elastica_F_over_Fstar_final"] =
             el.force * sc.flexural_rigidity / (F_star * setup.radius * setup.radius);
+    }
+    // How the wall force is carried at the last loading state: by the two outermost contact vertices
+    // (the elastica: entirely, as two line loads at the edges of the flat) or by a plateau (the paper).
+    double edge = 0, total = 0, centre = 0, centre_distance = INFINITY;
+    for (std::size_t k = 0; k < last->profile_x.size(); ++k) {
+        total += last->profile_pressure[k];
+        if (std::abs(last->profile_x[k]) < centre_distance)
+            centre_distance = std::abs(last->profile_x[k]), centre = last->profile_pressure[k];
+    }
+    if (!last->profile_x.empty()) {
+        const auto [lo, hi] = std::minmax_element(last->profile_x.begin(), last->profile_x.end());
+        edge = last->profile_pressure[lo - last->profile_x.begin()];
+        if (hi != lo) edge += last->profile_pressure[hi - last->profile_x.begin()];
+    }
+    s["edge_force_fraction_final"] = or_null(total > 0 ? edge / total : NAN);
+    s["centre_pressure_over_pstar_final"] =
+        or_null(centre_distance < 0.5 * l ? centre / sc.characteristic.p_star : 0.0);
+    if (elastica) {
+        s["elastica_contact_length_slope"] = or_null(fitted_slope(eps_late, lc_late_elastica));
+        s["elastica_volume_deviation_max"] = el_volume_deviation;
+        s["elastica_width_error_max"] = err_a;
+        s["elastica_volume_error_max"] = err_V;
+        s["elastica_force_error_max"] = err_F;
+        s["elastica_contact_length_error_max"] = err_Lc;
     }
     s["l0_over_b0"] = l / (2 * setup.radius);
     s["dt"] = r.dt;
