@@ -112,6 +112,7 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     const long max_relax = static_cast<long>(400 * slow_down * 2 * pi / (omega2 * result.dt));
 
     double gap = b0; // wall gap of the mid-line
+    const bool plastic = std::isfinite(setup.plastic_ratio);
     const auto record = [&](bool loading) {
         CompressionState s;
         s.strain = 1 - gap / b0;
@@ -148,6 +149,10 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
             s.profile_x.push_back(model.vertex(i).x() - x_centre);
             s.profile_pressure.push_back(model.contact_normal(i) / (setup.material.s * sc.l0));
         }
+        for (int i = sh.first; i < sh.first + sh.count; ++i) {
+            s.shape_x.push_back(model.vertex(i).x());
+            s.shape_y.push_back(model.vertex(i).y());
+        }
         result.states.push_back(std::move(s));
     };
 
@@ -166,6 +171,10 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
         model.translate(bottom_wall, Vec2(0, -R - r + 0.5 * (b0 - target) -
                                                  model.vertex(model.shells()[bottom_wall].first).y()));
         gap = target;
+        // A perfectly plastic ring (M^Y << M*) is a mechanism: once the walls stop, an elastic spring-back of
+        // order M^Y/k_b releases the contact and any shape is in equilibrium. It is therefore recorded at the
+        // end of the slow wall motion, in contact (decision spd-plastic-recording).
+        if (plastic) return;
         try {
             relax(model, result.dt, damping, tolerance, max_relax);
         } catch (const NumericalError& e) {
@@ -195,6 +204,10 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
         const Shell& sh = model.shells()[ring];
         for (int i = sh.first; i < sh.first + sh.count; ++i)
             centroid += model.vertex(i) / sh.count;
+        for (int i = sh.first; i < sh.first + sh.count; ++i) {
+            result.released_x.push_back(model.vertex(i).x());
+            result.released_y.push_back(model.vertex(i).y());
+        }
         for (int i = sh.first; i < sh.first + sh.count; ++i)
             result.shape_residual =
                 std::max(result.shape_residual, std::abs((model.vertex(i) - centroid).norm() - R) / R);

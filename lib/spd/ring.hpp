@@ -58,13 +58,15 @@ struct CompressionState
     int contact_vertices;                  // N'
     bool loading;
     std::vector<double> profile_x,
-        profile_pressure; // top-wall contact vertices: x - x_centre [m], f/(s l0) [Pa]
+        profile_pressure;                 // top-wall contact vertices: x - x_centre [m], f/(s l0) [Pa]
+    std::vector<double> shape_x, shape_y; // all ring vertices [m]
 };
 
 struct CompressionResult
 {
     std::vector<CompressionState> states;
     double shape_residual = 0; // after unloading and release: max | |x_k - centroid| - R0 | / R0
+    std::vector<double> released_x, released_y; // the ring after release [m]
     double dt = 0, dt_critical = 0;
     long steps = 0;
 };

@@ -200,6 +200,22 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
                           st.profile_pressure[k] / sc.characteristic.p_star,
                           plastic ? st.profile_pressure[k] / sc.characteristic.p_2star : NAN});
     }
+    // Shapes at eps = 0, 0.1, 0.2, ... (loading and unloading) and after release, closed polygons for
+    // plotting.
+    auto& shapes = ctx.table("shapes.dat", {{"eps", "1", "1 - b/b0 (-1: after unloading and release)"},
+                                            {"loading", "1", "1 loading, 0 unloading"},
+                                            {"x_over_R", "1", "vertex position"},
+                                            {"y_over_R", "1", "vertex position"}});
+    const auto write_shape = [&](double eps, double loading, const std::vector<double>& x,
+                                 const std::vector<double>& y) {
+        for (std::size_t k = 0; k <= x.size(); ++k)
+            shapes.row({eps, loading, x[k % x.size()] / setup.radius, y[k % x.size()] / setup.radius});
+    };
+    for (const CompressionState& st : r.states) {
+        const double e20 = std::round(st.strain * 20);
+        if (std::abs(st.strain * 20 - e20) < 1e-6) write_shape(st.strain, st.loading, st.shape_x, st.shape_y);
+    }
+    if (unload) write_shape(-1.0, 0.0, r.released_x, r.released_y);
     auto& s = ctx.summary();
     const auto or_null = [](double v) {
         return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -212,6 +228,15 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     for (const CompressionState& st : r.states)
         if (st.loading) last = &st;
     s["strain_reached"] = last->strain;
+    // W_s/W_b at about half the largest strain, to show its growth; eq. (35) at the last loading state.
+    for (const CompressionState& st : r.states)
+        if (st.loading && st.strain <= 0.5 * last->strain + 1e-9)
+            s["Ws_over_Wb_mid"] = st.bending_energy > 0 ? st.stretch_energy / st.bending_energy : 0.0;
+    s["eq35_ratio_final"] =
+        or_null(last->contact_vertices > 0
+                    ? last->wall_force / F_star /
+                          ((1 + last->core_pressure * setup.material.s * l / F_star) * last->contact_vertices)
+                    : NAN);
     s["a_over_b0_final"] = last->width;
     s["Lc_over_b0_final"] = last->contact_length;
     s["V_over_V0_final"] = last->volume;
