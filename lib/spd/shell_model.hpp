@@ -98,6 +98,8 @@ class ShellModel
 
     // Kinematic control of a rigid shell: sets the velocity of all its vertices.
     void set_velocity(int shell, const Vec2& velocity);
+    // Moves one vertex (a prescribed configuration, e.g. for finite-difference checks of the forces).
+    void set_vertex(int i, const Vec2& position) { x_.segment<2>(2 * i) = position; }
     void translate(int shell, const Vec2& displacement);
     std::int64_t steps() const { return steps_; }
     double min_vertex_mass() const; // over free vertices [kg]
