@@ -3,6 +3,7 @@
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"
 #include "sd/sd_scenes.hpp"
+#include "spd/spd_scenes.hpp"
 #include "vsm/vsm_scenes.hpp"
 
 namespace softgrain {
@@ -11,6 +12,7 @@ SceneRegistry all_scenes()
 {
     SceneRegistry registry;
     register_core_scenes(registry);
+    register_spd_scenes(registry);
     register_dpm_scenes(registry);
     register_vsm_scenes(registry);
     register_sd_scenes(registry);

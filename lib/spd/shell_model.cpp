@@ -1,0 +1,317 @@
+#include "spd/shell_model.hpp"
+
+#include "core/errors.hpp"
+#include "core/geometry.hpp"
+#include "core/integrators.hpp"
+#include "spd/force_laws.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace softgrain::spd {
+
+namespace {
+// Wraps an angle increment into (-pi, pi]: turning angles are measured with atan2.
+double wrapped(double angle)
+{
+    while (angle > std::numbers::pi)
+        angle -= 2 * std::numbers::pi;
+    while (angle <= -std::numbers::pi)
+        angle += 2 * std::numbers::pi;
+    return angle;
+}
+} // namespace
+
+int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_mass)
+{
+    const int n0 = this->vertices();
+    const int n = static_cast<int>(vertices.cols());
+    shell.first = n0;
+    shell.count = n;
+    x_.conservativeResize(2 * (n0 + n));
+    v_.conservativeResize(2 * (n0 + n));
+    f_.conservativeResize(2 * (n0 + n));
+    contact_force_.conservativeResize(2 * (n0 + n));
+    applied_.conservativeResize(2 * (n0 + n));
+    inverse_mass_.conservativeResize(2 * (n0 + n));
+    for (int k = 0; k < n; ++k) {
+        x_.segment<2>(2 * (n0 + k)) = vertices.col(k);
+        v_.segment<2>(2 * (n0 + k)).setZero();
+        f_.segment<2>(2 * (n0 + k)).setZero();
+        contact_force_.segment<2>(2 * (n0 + k)).setZero();
+        applied_.segment<2>(2 * (n0 + k)).setZero();
+        inverse_mass_.segment<2>(2 * (n0 + k)).setConstant(shell.rigid ? 0.0 : 1.0 / vertex_mass);
+    }
+    length_prev_.resize(n0 + n, 0.0);
+    axial_.resize(n0 + n, 0.0);
+    angle_prev_.resize(n0 + n, 0.0);
+    torque_.resize(n0 + n, 0.0);
+    contact_normal_.resize(n0 + n, 0.0);
+    for (int k = 0; k < shell.elements(); ++k)
+        length_prev_[n0 + k] = (vertex(next(shell, k)) - vertex(n0 + k)).norm();
+    for (int k = 0; k < n; ++k)
+        if (shell.has_hinge(k))
+            angle_prev_[n0 + k] =
+                turning_angle(vertex(prev(shell, k)), vertex(n0 + k), vertex(next(shell, k)));
+    shells_.push_back(shell);
+    const double V = shell.closed ? shell.depth * area(static_cast<int>(shells_.size()) - 1) : 0.0;
+    core_V_prev_.push_back(V);
+    core_V0_.push_back(V);
+    core_p_.push_back(0.0);
+    return static_cast<int>(shells_.size()) - 1;
+}
+
+void ShellModel::freeze(int vertex, int component)
+{
+    inverse_mass_[2 * vertex + component] = 0.0;
+}
+
+void ShellModel::set_velocity(int shell, const Vec2& velocity)
+{
+    const Shell& s = shells_[shell];
+    for (int i = s.first; i < s.first + s.count; ++i)
+        v_.segment<2>(2 * i) = velocity;
+}
+
+void ShellModel::translate(int shell, const Vec2& displacement)
+{
+    const Shell& s = shells_[shell];
+    for (int i = s.first; i < s.first + s.count; ++i)
+        x_.segment<2>(2 * i) += displacement;
+}
+
+double ShellModel::area(int shell) const
+{
+    const Shell& s = shells_[shell];
+    return polygon_signed_area(Eigen::Map<const Points<2>>(x_.data() + 2 * s.first, 2, s.count));
+}
+
+// SPD eqs. (1) and (3): incremental stretch force and hinge torque, applied as axial forces and as two
+// couples (eqs. (8)-(9)).
+void ShellModel::internal_forces(const Shell& s)
+{
+    for (int k = 0; k < s.elements(); ++k) {
+        const int i = s.first + k, j = next(s, k);
+        const Vec2 e = vertex(j) - vertex(i);
+        const double l = e.norm();
+        const double contraction = length_prev_[i] - l; // compression positive (section 2.2)
+        axial_[i] = elastoplastic_update(axial_[i], s.laws.k_s * contraction, s.laws.F_Y);
+        length_prev_[i] = l;
+        const Vec2 push = axial_[i] * e / l; // a compressed element pushes its ends apart
+        add_force(j, push);
+        add_force(i, -push);
+    }
+    for (int k = 0; k < s.count; ++k) {
+        if (!s.has_hinge(k)) continue;
+        const int i = s.first + k, a = prev(s, k), b = next(s, k);
+        const double theta = turning_angle(vertex(a), vertex(i), vertex(b));
+        torque_[i] =
+            elastoplastic_update(torque_[i], s.laws.k_b * wrapped(theta - angle_prev_[i]), s.laws.M_Y);
+        angle_prev_[i] = theta;
+        const ThreeForces couples = torque_to_couples(vertex(a), vertex(i), vertex(b), torque_[i]);
+        add_force(a, couples.previous);
+        add_force(i, couples.centre);
+        add_force(b, couples.next);
+    }
+}
+
+// SPD eq. (4) and section 2.4: dp = -K_Omega dV/V0 (undrained), plus a constant applied (drained) pressure;
+// each element receives s l p along its outward normal at its midpoint, half to each end (this is
+// p dV/dx_k exactly).
+void ShellModel::core_forces(int index)
+{
+    const Shell& s = shells_[index];
+    const double V = s.depth * area(index);
+    core_p_[index] += -s.K_Omega * (V - core_V_prev_[index]) / core_V0_[index];
+    core_V_prev_[index] = V;
+    const double p = core_p_[index] + s.pressure_applied;
+    if (p == 0.0) return;
+    for (int k = 0; k < s.count; ++k) {
+        const int i = s.first + k, j = next(s, k);
+        const Vec2 e = vertex(j) - vertex(i);
+        const Vec2 outward_times_l(e.y(), -e.x()); // CCW polygon: outward normal times l
+        const Vec2 half = 0.5 * s.depth * p * outward_times_l;
+        add_force(i, half);
+        add_force(j, half);
+    }
+}
+
+// Section 2.3: every vertex of a shell against every element of the other shells (sphero-segments). A
+// contact with an element end (branches a < 0, a > l of Fig. 4) is a vertex-vertex contact; it is counted
+// once, with the element that starts at that end (or, for the last vertex of an open shell, that ends there).
+void ShellModel::contact_forces(double dt)
+{
+    std::fill(contact_normal_.begin(), contact_normal_.end(), 0.0);
+    contact_force_.setZero();
+    if (contact_.k_n == 0.0) return;
+    std::map<std::pair<int, int>, double> friction;
+    for (std::size_t p = 0; p < shells_.size(); ++p) {
+        const Shell& sp = shells_[p];
+        for (std::size_t q = 0; q < shells_.size(); ++q) {
+            const Shell& sq = shells_[q];
+            if (p == q || (sp.rigid && sq.rigid)) continue;
+            const double reach = sp.radius + sq.radius;
+            for (int i = sp.first; i < sp.first + sp.count; ++i) {
+                const Vec2 c = vertex(i);
+                for (int k = 0; k < sq.elements(); ++k) {
+                    const int a = sq.first + k, b = next(sq, k);
+                    const SegmentProximity prox = point_segment_proximity(c, vertex(a), vertex(b));
+                    if (prox.distance >= reach) continue;
+                    const bool last_end = !sq.closed && k == sq.elements() - 1;
+                    if (prox.branch == SegmentBranch::end_b && !last_end)
+                        continue; // counted with element k+1
+                    const auto w = transfer_weights(std::clamp(prox.a, 0.0, prox.length), prox.length);
+                    const Vec2 v_rel =
+                        v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
+                    const double fn = std::max(0.0, normal_contact_force(contact_.k_n, prox.distance, reach) -
+                                                        contact_.normal_damping * v_rel.dot(prox.normal));
+                    Vec2 F = fn * prox.normal;
+                    if (contact_.mu > 0) {
+                        const Vec2 t(prox.normal.y(), -prox.normal.x()); // t = n x z (section 2.3)
+                        const auto key = std::make_pair(i, a);
+                        const auto old = friction_.find(key);
+                        const double ft =
+                            coulomb_friction_update(old == friction_.end() ? 0.0 : old->second, contact_.k_t,
+                                                    v_rel.dot(t) * dt, contact_.mu, fn);
+                        friction[key] = ft;
+                        F += ft * t;
+                    }
+                    contact_force_.segment<2>(2 * i) += F;
+                    contact_force_.segment<2>(2 * a) -= w[0] * F;
+                    contact_force_.segment<2>(2 * b) -= w[1] * F;
+                    contact_normal_[i] += fn;
+                }
+            }
+        }
+    }
+    friction_.swap(friction); // contacts that opened lose their history
+    f_ += contact_force_;
+}
+
+void ShellModel::compute_forces(double dt)
+{
+    f_ = applied_;
+    for (std::size_t p = 0; p < shells_.size(); ++p) {
+        const Shell& s = shells_[p];
+        if (s.rigid) continue;
+        internal_forces(s);
+        if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(static_cast<int>(p));
+    }
+    contact_forces(dt);
+}
+
+void ShellModel::step(double dt, double damping)
+{
+    if (steps_ == 0) compute_forces(dt);
+    const auto forces = [&](const Eigen::VectorXd&, const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+        compute_forces(dt);
+        f = f_;
+        // Damping acts on free degrees of freedom only (the inverse mass masks the frozen ones).
+        add_viscous_damping(f, v, damping);
+    };
+    Eigen::VectorXd f = f_;
+    add_viscous_damping(f, v_, damping);
+    velocity_verlet_step(x_, v_, f, inverse_mass_, dt, forces);
+    ++steps_;
+    if (!x_.allFinite() || !v_.allFinite()) {
+        std::ostringstream cause;
+        cause << "time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
+              << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
+        throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
+    }
+}
+
+double ShellModel::min_vertex_mass() const
+{
+    double m = INFINITY;
+    for (Eigen::Index d = 0; d < inverse_mass_.size(); ++d)
+        if (inverse_mass_[d] > 0) m = std::min(m, 1.0 / inverse_mass_[d]);
+    return m;
+}
+
+double ShellModel::critical_time_step() const
+{
+    double k_max = contact_.k_n;
+    for (std::size_t p = 0; p < shells_.size(); ++p) {
+        const Shell& s = shells_[p];
+        if (s.rigid) continue;
+        double l_min = INFINITY, gradient_sq = 0;
+        for (int k = 0; k < s.elements(); ++k)
+            l_min = std::min(l_min, length_prev_[s.first + k]);
+        k_max = std::max({k_max, s.laws.k_s, 4.0 * s.laws.k_b / (l_min * l_min)});
+        if (s.closed && s.K_Omega > 0) {
+            for (int k = 0; k < s.count; ++k) {
+                const Vec2 d = vertex(next(s, k)) - vertex(prev(s, k)); // dA/dx_k = perp(d)/2
+                gradient_sq += 0.25 * d.squaredNorm();
+            }
+            k_max = std::max(k_max, s.K_Omega * s.depth * s.depth * gradient_sq / core_V0_[p]);
+        }
+    }
+    return std::sqrt(min_vertex_mass() / k_max);
+}
+
+double ShellModel::stretch_energy() const
+{
+    double W = 0;
+    for (const Shell& s : shells_)
+        if (!s.rigid)
+            for (int k = 0; k < s.elements(); ++k)
+                W += axial_[s.first + k] * axial_[s.first + k] / (2 * s.laws.k_s);
+    return W;
+}
+
+double ShellModel::bending_energy() const
+{
+    double W = 0;
+    for (const Shell& s : shells_)
+        if (!s.rigid)
+            for (int k = 0; k < s.count; ++k)
+                if (s.has_hinge(k)) W += torque_[s.first + k] * torque_[s.first + k] / (2 * s.laws.k_b);
+    return W;
+}
+
+double ShellModel::kinetic_energy() const
+{
+    double K = 0;
+    for (Eigen::Index d = 0; d < v_.size(); ++d)
+        if (inverse_mass_[d] > 0) K += 0.5 * v_[d] * v_[d] / inverse_mass_[d];
+    return K;
+}
+
+double ShellModel::max_free_force() const
+{
+    double m = 0;
+    for (Eigen::Index d = 0; d < f_.size(); ++d)
+        if (inverse_mass_[d] > 0) m = std::max(m, std::abs(f_[d]));
+    return m;
+}
+
+Vec2 ShellModel::contact_force_on(int shell) const
+{
+    const Shell& s = shells_[shell];
+    Vec2 F = Vec2::Zero();
+    for (int i = s.first; i < s.first + s.count; ++i)
+        F += contact_force_.segment<2>(2 * i);
+    return F;
+}
+
+} // namespace softgrain::spd
+
+namespace softgrain::spd {
+
+long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps)
+{
+    for (long n = 1; n <= max_steps; ++n) {
+        model.step(dt, damping);
+        if (n % 16 == 0 && model.max_free_force() < force_tolerance) return n;
+    }
+    std::ostringstream cause;
+    cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "
+          << model.max_free_force() << " N > tolerance " << force_tolerance
+          << " N): damping too weak or too strong for the slowest mode";
+    throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
+}
+
+} // namespace softgrain::spd

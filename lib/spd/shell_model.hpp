@@ -1,0 +1,137 @@
+// SPD shell model (Trivino et al., section 2): particles and walls as closed or open chains of mass points.
+//
+// State is stored flat: positions x, velocities v and forces f are vectors of 2 * (number of vertices)
+// entries; each shell owns a contiguous range of vertices. An open shell ends on an "absent" vertex
+// (section 2.1, Fig. 2): its last element and the bending hinges at its two ends do not exist. A wall is a
+// rigid open shell (reference angles 0) whose vertices are frozen (inverse mass 0) and move with a
+// prescribed velocity. Internal laws are incremental (eqs. (1)-(4)): the history (axial forces, hinge
+// torques, core pressure) lives in per-element, per-vertex and per-shell records updated at each force
+// evaluation from the change of geometry since the previous one.
+#pragma once
+
+#include "core/vector.hpp"
+#include "spd/calibration.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace softgrain::spd {
+
+// One shell: its vertex range, topology and laws. Stiffnesses of a frozen (rigid) shell are unused.
+struct Shell
+{
+    int first = 0, count = 0; // vertices [first, first + count)
+    bool closed = true;       // closed ring, or open chain ending on the absent vertex
+    bool rigid = false;       // all vertices frozen, moved kinematically (walls, section 4.1)
+    ShellLaws laws;
+    double depth = 1;            // out-of-plane length s [m]
+    double radius = 0;           // vertex disk / sphero-segment radius r [m]
+    double K_Omega = 0;          // undrained core modulus, eq. (4) [Pa]; 0: no core stiffness
+    double pressure_applied = 0; // constant (drained) pressure acting inside the shell [Pa]
+    int elements() const { return closed ? count : count - 1; }
+    bool has_hinge(int local) const { return closed || (local > 0 && local < count - 1); }
+};
+
+// Contact law between shells: normal eq. (6), incremental Coulomb friction eq. (7) when mu > 0 (the scenes of
+// sections 3-4 are frictionless: decision spd-ring-walls).
+struct ContactLaw
+{
+    double k_n = 0; // [N/m]
+    double k_t = 0; // [N/m]
+    double mu = 0;  // friction coefficient
+    // Normal viscous damping c_n [N s/m] for quasi-static relaxation only (decision spd-contact-damping): a
+    // force -c_n (v_rel . n) while in contact, the total normal force kept repulsive. It vanishes at rest and
+    // removes the chatter of a vertex at the edge of a flat contact (not part of eq. (6)).
+    double normal_damping = 0;
+};
+
+class ShellModel
+{
+  public:
+    // Adds a shell with the given vertex positions (columns) and mass per vertex; the current geometry
+    // defines the reference lengths and angles. Returns its index.
+    int add_shell(const Points<2>& vertices, Shell shell, double vertex_mass);
+
+    // Freezes one degree of freedom (0 = x, 1 = y) of a vertex: it keeps its velocity (zero by default).
+    void freeze(int vertex, int component);
+    void set_contact_law(ContactLaw law) { contact_ = law; }
+    // A constant external force on a vertex [N] (a point load, section 3).
+    void set_applied_force(int vertex, const Vec2& force) { applied_.segment<2>(2 * vertex) = force; }
+
+    // Forces at the current positions; updates the incremental state (eqs. (1)-(4), (7)) from the geometry
+    // change since the previous call; dt converts the (half-step) velocities into the tangential
+    // displacement increments of eq. (7). Called once per time step by step().
+    void compute_forces(double dt);
+
+    // One velocity-Verlet step (section 2.4) with viscous damping c v [N s/m] on the free vertices.
+    // Throws NumericalError (exit 3) on a non-finite state, naming dt/dt_c.
+    void step(double dt, double damping);
+
+    // SPD section 2.4: dt_c = sqrt(m / k_max), with k_max the largest of k_s, the bending stiffness
+    // 4 k_b / l^2 seen by a vertex, the contact stiffness k_n and the core stiffness
+    // K_Omega s^2 sum_k |dA/dx_k|^2 / V0 (the eigenvalue of the rank-one core Hessian, decision
+    // spd-dtc-kmax).
+    double critical_time_step() const;
+
+    // Measures.
+    double area(int shell) const;  // polygon area [m^2], CCW positive
+    double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
+    double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
+    double core_pressure(int shell) const { return core_p_[shell]; } // from eq. (4), excluding applied [Pa]
+    double kinetic_energy() const;
+    double
+    max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
+    Vec2 vertex(int i) const { return {x_[2 * i], x_[2 * i + 1]}; }
+    Vec2 velocity(int i) const { return {v_[2 * i], v_[2 * i + 1]}; }
+    Vec2 force(int i) const { return {f_[2 * i], f_[2 * i + 1]}; }
+    // Sum of contact forces received by the vertices of `shell` from other shells, and per vertex.
+    Vec2 contact_force_on(int shell) const;
+    double contact_normal(int vertex) const { return contact_normal_[vertex]; }
+    const std::vector<Shell>& shells() const { return shells_; }
+    int vertices() const { return static_cast<int>(x_.size() / 2); }
+    double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
+    double hinge_torque(int vertex) const { return torque_[vertex]; }
+
+    // Kinematic control of a rigid shell: sets the velocity of all its vertices.
+    void set_velocity(int shell, const Vec2& velocity);
+    // Moves one vertex (a prescribed configuration, e.g. for finite-difference checks of the forces).
+    void set_vertex(int i, const Vec2& position) { x_.segment<2>(2 * i) = position; }
+    void translate(int shell, const Vec2& displacement);
+    std::int64_t steps() const { return steps_; }
+    double min_vertex_mass() const; // over free vertices [kg]
+
+  private:
+    int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
+    int prev(const Shell& s, int local) const { return s.first + (local + s.count - 1) % s.count; }
+    void internal_forces(const Shell& s);
+    void core_forces(int index);
+    void contact_forces(double dt);
+    void add_force(int i, const Vec2& F)
+    {
+        f_[2 * i] += F.x();
+        f_[2 * i + 1] += F.y();
+    }
+
+    std::vector<Shell> shells_;
+    Eigen::VectorXd x_, v_, f_, inverse_mass_, applied_;
+    Eigen::VectorXd contact_force_;           // per dof: contact force received [N]
+    std::vector<double> length_prev_, axial_; // per element (indexed by its first vertex): l at last call, F
+    std::vector<double> angle_prev_, torque_; // per vertex: theta at last call, M
+    std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
+    std::vector<double> contact_normal_;                 // per vertex: normal contact force received [N]
+    std::map<std::pair<int, int>, double> friction_;     // (vertex, element first vertex) -> f_t [N], eq. (7)
+    ContactLaw contact_;
+    std::int64_t steps_ = 0;
+};
+
+// Quasi-static relaxation (section 4.1, "complete relaxation after each strain increment"): damped
+// velocity-Verlet steps until the largest unbalanced force on a free degree of freedom (damping excluded)
+// is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice.
+// Returns the number of steps taken.
+long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps);
+
+} // namespace softgrain::spd

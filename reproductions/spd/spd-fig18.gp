@@ -1,0 +1,8 @@
+# spd-fig18: p/p** profiles, plastic ring.
+set xlabel "x / R"
+set ylabel "p / p**"
+set key top right
+set yrange [0:*]
+d = word(rundirs, 1).'/profiles.dat'
+plot for [e in "0.1 0.2 0.3 0.4"] d using (abs(column("eps") - e) < 1e-6 ? column("x_over_R") : NaN):"p_over_p2star" with linespoints lw 2 title "{/Symbol e} = ".e, \
+     1 ls 4 title "p**"
