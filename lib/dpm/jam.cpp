@@ -11,20 +11,6 @@
 
 namespace softgrain::dpm {
 
-namespace {
-
-void compress(DpmSystem& system, Eigen::VectorXd& x, double f)
-{
-    for (const Particle& p : system.particles) {
-        auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
-        const Eigen::Vector2d centre = v.rowwise().mean();
-        v.colwise() += (f - 1.0) * centre;
-    }
-    *system.box *= f;
-}
-
-} // namespace
-
 double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     bool disks = true;
@@ -137,7 +123,7 @@ JamResult jam(const JamOptions& o)
                                      "a rearrangement makes the pressure jump over the window");
             const Eigen::VectorXd saved_x = out.x;
             const Eigen::Vector2d saved_box = *s.box;
-            compress(s, out.x, 1.0 - step);
+            scale_packing(s, out.x, 1.0 - step);
             iterations += relax(step_index);
             const double after = current_pressure();
             if (after >= 1.01 * target) { // overshoot: back, halve (section 9.4)

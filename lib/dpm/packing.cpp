@@ -10,21 +10,6 @@
 
 namespace softgrain::dpm {
 
-namespace {
-
-// Scale every particle's centre (vertex mean) by f, keeping its shape; scale the box.
-void compress(DpmSystem& system, Eigen::VectorXd& x, double f)
-{
-    for (const Particle& p : system.particles) {
-        auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
-        const Eigen::Vector2d centre = v.rowwise().mean();
-        v.colwise() += (f - 1.0) * centre;
-    }
-    *system.box *= f;
-}
-
-} // namespace
-
 Packing jam_packing(const PackingOptions& o)
 {
     const double pi = std::numbers::pi, sigma = 1.0, R = o.C * sigma;
@@ -72,7 +57,7 @@ Packing jam_packing(const PackingOptions& o)
     for (; out.compression_steps < max_steps; ++out.compression_steps) {
         const Eigen::VectorXd saved_x = out.x;
         const Eigen::Vector2d saved_box = *s.box;
-        compress(s, out.x, 1.0 - step);
+        scale_packing(s, out.x, 1.0 - step);
         const FireResult r = relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)

@@ -3,6 +3,8 @@
 #include "core/errors.hpp"
 #include "dpm/interactions.hpp"
 
+#include <stdexcept>
+
 namespace softgrain::dpm {
 
 InteractionKind interaction_from_name(const std::string& name)
@@ -68,6 +70,17 @@ Eigen::Matrix2Xd regular_polygon(int n, double r, const Eigen::Vector2d& c, doub
         v.col(i) = c + r * Eigen::Vector2d(std::cos(angle), std::sin(angle));
     }
     return v;
+}
+
+void scale_packing(DpmSystem& system, Eigen::VectorXd& x, double f)
+{
+    if (!system.box) throw std::logic_error("scale_packing: the system has no periodic box");
+    for (const Particle& p : system.particles) {
+        auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
+        const Eigen::Vector2d centre = v.rowwise().mean();
+        v.colwise() += (f - 1.0) * centre;
+    }
+    *system.box *= f;
 }
 
 } // namespace softgrain::dpm

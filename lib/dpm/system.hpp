@@ -52,6 +52,10 @@ struct DpmSystem
                       Eigen::VectorXd& x);
 };
 
+// Affine compression of a periodic packing by the factor f: every particle's centre (vertex mean) is scaled
+// by f and its shape kept; the box sides are scaled by f. The system must have a box.
+void scale_packing(DpmSystem& system, Eigen::VectorXd& x, double f);
+
 // Parts of the total energy, so that each can be evaluated alone.
 enum EnergyPart : unsigned { shape_part = 1u, interaction_part = 2u, anchor_part = 4u, all_parts = 7u };
 
