@@ -28,13 +28,24 @@ void list_scenes(const SceneRegistry& scenes)
 
 void describe_scene(const Scene& scene)
 {
+    // Columns as wide as their longest entry, plus two spaces.
+    std::size_t name_width = std::string("parameter").size(), default_width = std::string("default").size(),
+                unit_width = std::string("unit").size();
+    for (const auto& p : scene.parameters) {
+        name_width = std::max(name_width, p.name.size());
+        default_width = std::max(default_width, to_string(p.default_value).size());
+        unit_width = std::max(unit_width, p.unit.size());
+    }
+    const auto row = [&](const std::string& name, const std::string& value, const std::string& unit,
+                         const std::string& meaning) {
+        std::cout << std::left << std::setw(static_cast<int>(name_width + 2)) << name
+                  << std::setw(static_cast<int>(default_width + 2)) << value
+                  << std::setw(static_cast<int>(unit_width + 2)) << unit << meaning << "\n";
+    };
     std::cout << scene.name << ": " << scene.description << "\n\n";
-    std::cout << std::left << std::setw(18) << "parameter" << std::setw(14) << "default" << std::setw(10)
-              << "unit"
-              << "meaning (allowed)\n";
+    row("parameter", "default", "unit", "meaning (allowed)");
     for (const auto& p : scene.parameters)
-        std::cout << std::left << std::setw(18) << p.name << std::setw(14) << to_string(p.default_value)
-                  << std::setw(10) << p.unit << p.description << " (" << p.allowed() << ")\n";
+        row(p.name, to_string(p.default_value), p.unit, p.description + " (" + p.allowed() + ")");
 }
 
 // A scene to run: a registered name, or a TOML file naming its base scene with `scene = "..."`.
