@@ -334,18 +334,12 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
     return f;
 }
 
-Points<3> Model::contact_forces(const Points<3>& x, const std::vector<Mat3>& F, double t) const
+template <class OnReal, class OnGhost>
+void Model::for_each_contact(const Points<3>& x, const std::vector<Mat3>& F, double t, OnReal&& on_real,
+                             OnGhost&& on_ghost) const
 {
-    const int n = static_cast<int>(size());
     const LameParameters lame = material_.lame();
-    Points<3> f = Points<3>::Zero(3, n);
-    // y~ derivative: d(F_a X)/dx_c applied to g gives block^T vec(g X^T).
-    const auto apply_y = [&](int a, const Vec3& g, const Vec3& X) {
-        const Eigen::Matrix<double, 9, 1> gx = vec(g * X.transpose());
-        for (const JacobianTerm& term : full_jacobian_[static_cast<std::size_t>(a)])
-            f.col(term.particle) -= term.block.transpose() * gx;
-    };
-    for (int a = 0; a < n; ++a) {
+    for (int a = 0; a < static_cast<int>(size()); ++a) {
         const auto ua = static_cast<std::size_t>(a);
         const auto& list = cells_.neighbours[ua];
         std::vector<Vec3> ghost;
@@ -359,27 +353,44 @@ Points<3> Model::contact_forces(const Points<3>& x, const std::vector<Mat3>& F, 
                 if (b < a) continue; // each real pair once
                 // u = x_ab - F_ab X_ab, F_ab = (F_a + F_b)/2, eq. (29).
                 const Vec3 x_ab = x.col(b) - x.col(a);
-                const Vec3 y = 0.5 * (F[ua] + F[static_cast<std::size_t>(b)]) * nb.branch;
-                const Vec3 u = x_ab - y;
-                const Vec3 gx = contact_gradient_x_real(u, x_ab, K);
-                const Vec3 gy = contact_gradient_y(u, x_ab.normalized(), K);
-                f.col(a) += gx; // dx_ab/dx_a = -I, eq. (65)
-                f.col(b) -= gx;
-                apply_y(a, 0.5 * gy, nb.branch);
-                apply_y(b, 0.5 * gy, nb.branch);
+                const Vec3 u = x_ab - 0.5 * (F[ua] + F[static_cast<std::size_t>(b)]) * nb.branch;
+                on_real(a, b, K, u, x_ab, nb.branch);
             } else {
                 const Ghost* g = nullptr;
                 for (const Ghost& candidate : ghosts_[ua])
                     if (candidate.slot == static_cast<int>(k)) g = &candidate;
                 if (g->kind == BoundaryKind::free) continue; // D = 0: no local displacement, eq. (30)
                 // u = D (x_ab - F_a X_ab), eq. (30); n is the fixed boundary normal.
-                const Vec3 u = g->D * (ghost[k] - F[ua] * nb.branch);
-                const Vec3 gy = contact_gradient_y(u, nb.normal, K);
-                f.col(a) -= 2.0 * (g->D * gy); // d(D x_ab)/dx_a = -2 D, eq. (66)-(67); dU/dx~ = -dU/dy~
-                apply_y(a, g->D * gy, nb.branch);
+                on_ghost(a, *g, K, Vec3(g->D * (ghost[k] - F[ua] * nb.branch)), nb);
             }
         }
     }
+}
+
+Points<3> Model::contact_forces(const Points<3>& x, const std::vector<Mat3>& F, double t) const
+{
+    Points<3> f = Points<3>::Zero(3, static_cast<Eigen::Index>(size()));
+    // y~ derivative: d(F_a X)/dx_c applied to g gives block^T vec(g X^T).
+    const auto apply_y = [&](int a, const Vec3& g, const Vec3& X) {
+        const Eigen::Matrix<double, 9, 1> gx = vec(g * X.transpose());
+        for (const JacobianTerm& term : full_jacobian_[static_cast<std::size_t>(a)])
+            f.col(term.particle) -= term.block.transpose() * gx;
+    };
+    for_each_contact(
+        x, F, t,
+        [&](int a, int b, const ContactStiffness& K, const Vec3& u, const Vec3& x_ab, const Vec3& X_ab) {
+            const Vec3 gx = contact_gradient_x_real(u, x_ab, K);
+            const Vec3 gy = contact_gradient_y(u, x_ab.normalized(), K);
+            f.col(a) += gx; // dx_ab/dx_a = -I, eq. (65)
+            f.col(b) -= gx;
+            apply_y(a, 0.5 * gy, X_ab);
+            apply_y(b, 0.5 * gy, X_ab);
+        },
+        [&](int a, const Ghost& g, const ContactStiffness& K, const Vec3& u, const Neighbour& nb) {
+            const Vec3 gy = contact_gradient_y(u, nb.normal, K);
+            f.col(a) -= 2.0 * (g.D * gy); // d(D x_ab)/dx_a = -2 D, eq. (66)-(67); dU/dx~ = -dU/dy~
+            apply_y(a, g.D * gy, nb.branch);
+        });
     return f;
 }
 
@@ -395,30 +406,15 @@ double Model::internal_energy(const Points<3>& x, double t) const
 
 double Model::contact_energy_total(const Points<3>& x, double t) const
 {
-    const LameParameters lame = material_.lame();
-    const std::vector<Mat3> F = deformation_gradients(x, t);
     double energy = 0;
-    for (int a = 0; a < static_cast<int>(size()); ++a) {
-        const auto ua = static_cast<std::size_t>(a);
-        const auto& list = cells_.neighbours[ua];
-        std::vector<Vec3> ghost;
-        if (!ghosts_[ua].empty()) ghost = ghost_branches(x, a, t);
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const Neighbour& nb = list[k];
-            const ContactStiffness K =
-                contact_stiffness(options_.xi_n, options_.xi_t, material_.young, lame.mu, nb.area, nb.length);
-            if (!nb.ghost()) {
-                if (nb.particle < a) continue;
-                const Vec3 x_ab = x.col(nb.particle) - x.col(a);
-                const Vec3 u = x_ab - 0.5 * (F[ua] + F[static_cast<std::size_t>(nb.particle)]) * nb.branch;
-                energy += contact_energy(u, x_ab.normalized(), K);
-            } else {
-                for (const Ghost& g : ghosts_[ua])
-                    if (g.slot == static_cast<int>(k) && g.kind != BoundaryKind::free)
-                        energy += contact_energy(g.D * (ghost[k] - F[ua] * nb.branch), nb.normal, K);
-            }
-        }
-    }
+    for_each_contact(
+        x, deformation_gradients(x, t), t,
+        [&](int, int, const ContactStiffness& K, const Vec3& u, const Vec3& x_ab, const Vec3&) {
+            energy += contact_energy(u, x_ab.normalized(), K);
+        },
+        [&](int, const Ghost&, const ContactStiffness& K, const Vec3& u, const Neighbour& nb) {
+            energy += contact_energy(u, nb.normal, K);
+        });
     return energy;
 }
 

@@ -117,6 +117,13 @@ class Model
         BoundaryKind kind;
         Mat3 D; // eq. (14)
     };
+    // The pairwise contact stabilisation of eqs. (29)-(30), visited once per pair: calls
+    // on_real(a, b, K, u, x_ab, X_ab) for each pair of real particles (b > a) and
+    // on_ghost(a, ghost, K, u, neighbour) for each ghost on a displacement boundary (free ghosts carry none),
+    // with K the stiffness of eq. (50) and u the local non-affine displacement.
+    template <class OnReal, class OnGhost>
+    void for_each_contact(const Points<3>& x, const std::vector<Mat3>& F, double t, OnReal&& on_real,
+                          OnGhost&& on_ghost) const;
     Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label,
                            double t) const; // xbar_ab, section 2.4
 
