@@ -25,6 +25,27 @@ InternalForce internal_force_choice(const Parameters& p)
     return p.choice("internal_force") == "eq43" ? InternalForce::eq43 : InternalForce::eq41;
 }
 
+// The material and arrangement parameters every VSM scene shares, with each scene's own default.
+ParameterSpec young_modulus(double value)
+{
+    return ParameterSpec::real("E", value, "Pa", "Young's modulus").positive();
+}
+
+ParameterSpec poisson_ratio(double value)
+{
+    return ParameterSpec::real("nu", value, "1", "Poisson's ratio").at_least(-0.99).below(0.5);
+}
+
+ParameterSpec density(double value)
+{
+    return ParameterSpec::real("rho", value, "kg/m^3", "density").positive();
+}
+
+ParameterSpec jitter_seed()
+{
+    return ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative();
+}
+
 ParameterSpec internal_force_parameter(const std::string& default_value)
 {
     return ParameterSpec::choice(
@@ -213,12 +234,12 @@ void register_vsm_scenes(SceneRegistry& registry)
                                 "uniform jitter of each coordinate, fraction of the spacing")
                 .non_negative()
                 .below(0.5),
-            ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative(),
+            jitter_seed(),
             ParameterSpec::real("alpha", 1e-4, "1", "amplitude alpha of the linear field, eq. (52)")
                 .positive(),
-            ParameterSpec::real("E", 1.0e6, "Pa", "Young's modulus").positive(),
-            ParameterSpec::real("nu", 0.3, "1", "Poisson's ratio").at_least(-0.99).below(0.5),
-            ParameterSpec::real("rho", 1.0e3, "kg/m^3", "density").positive(),
+            young_modulus(1.0e6),
+            poisson_ratio(0.3),
+            density(1.0e3),
             ParameterSpec::real("xi", 1.0, "1", "contact factors xi_n = xi_t of eq. (50)").non_negative(),
             internal_force_parameter("eq41"),
             ParameterSpec::real("ramp_time", 50.0, "s", "B, C: linear ramp of the loads (paper: 50 s)")
@@ -242,10 +263,10 @@ void register_vsm_scenes(SceneRegistry& registry)
                                 "uniform jitter of each coordinate, fraction of the spacing")
                 .non_negative()
                 .below(0.5),
-            ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative(),
-            ParameterSpec::real("E", 17.0e6, "Pa", "Young's modulus").positive(),
-            ParameterSpec::real("nu", 0.45, "1", "Poisson's ratio").at_least(-0.99).below(0.5),
-            ParameterSpec::real("rho", 1.1e3, "kg/m^3", "density").positive(),
+            jitter_seed(),
+            young_modulus(17.0e6),
+            poisson_ratio(0.45),
+            density(1.1e3),
             ParameterSpec::real("amplitude_scale", 1.0, "1",
                                 "factor on (U1, U2, U3) = (5e-4, 5e-4, -1e-3) m (linear-regime check)")
                 .positive(),
@@ -266,9 +287,9 @@ void register_vsm_scenes(SceneRegistry& registry)
             ParameterSpec::real("spacing", 0.5, "m", "regular lattice spacing (must divide 6, 10 and 3 m)")
                 .positive(),
             internal_force_parameter("eq43"),
-            ParameterSpec::real("E", 50.0e3, "Pa", "Young's modulus").positive(),
-            ParameterSpec::real("nu", 0.3, "1", "Poisson's ratio").at_least(-0.99).below(0.5),
-            ParameterSpec::real("rho", 1.0e3, "kg/m^3", "density").positive(),
+            young_modulus(50.0e3),
+            poisson_ratio(0.3),
+            density(1.0e3),
             ParameterSpec::real("xi", 1.0, "1", "contact factors xi_n = xi_t of eq. (50)").non_negative(),
             ParameterSpec::real("load_1", 150.0, "Pa", "component 1 of the traction vector times p(t)"),
             ParameterSpec::real("load_2", 300.0, "Pa", "component 2"),
@@ -293,10 +314,10 @@ void register_vsm_scenes(SceneRegistry& registry)
             ParameterSpec::real("jitter", 0.2, "1", "irregular arrangement: jitter fraction")
                 .non_negative()
                 .below(0.5),
-            ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative(),
-            ParameterSpec::real("E", 1.0e6, "Pa", "Young's modulus").positive(),
-            ParameterSpec::real("nu", 0.45, "1", "Poisson's ratio").at_least(-0.99).below(0.5),
-            ParameterSpec::real("rho", 1.0e3, "kg/m^3", "density").positive(),
+            jitter_seed(),
+            young_modulus(1.0e6),
+            poisson_ratio(0.45),
+            density(1.0e3),
             ParameterSpec::real("xi", 1.0, "1", "contact (stabilisation) factors xi_n = xi_t of eq. (50)")
                 .non_negative(),
             ParameterSpec::real("c1", 0.1, "1", "artificial viscosity, linear term of eq. (51)")
