@@ -49,6 +49,13 @@ std::optional<double> parse_real(const std::string& text, bool accepts_infinity)
     return value;
 }
 
+bool is_keyword(const ParameterSpec& spec, const std::string& text)
+{
+    for (const auto& word : spec.keywords)
+        if (word == text) return true;
+    return false;
+}
+
 std::optional<long long> parse_integer(const std::string& text)
 {
     long long value = 0;
@@ -141,6 +148,18 @@ ParameterSpec& ParameterSpec::infinity_allowed()
     return *this;
 }
 
+ParameterSpec& ParameterSpec::keyword_allowed(std::string word)
+{
+    keywords.push_back(std::move(word));
+    return *this;
+}
+
+ParameterSpec& ParameterSpec::keyword_by_default(std::string word)
+{
+    default_value = word;
+    return keyword_allowed(std::move(word));
+}
+
 std::string ParameterSpec::type_name() const
 {
     switch (type) {
@@ -169,6 +188,8 @@ std::string ParameterSpec::allowed() const
     if (std::isfinite(min) && std::isfinite(max)) statement << " and";
     if (std::isfinite(max)) statement << (max_inclusive ? " <= " : " < ") << format_number(max);
     if (accepts_infinity) statement << ", or inf";
+    for (const auto& word : keywords)
+        statement << ", or " << word;
     if (unit != "-" && !unit.empty()) statement << " [" << unit << "]";
     return statement.str();
 }
@@ -209,6 +230,9 @@ void Parameters::assign(const ParameterSpec& spec, ParameterValue value, const s
         for (const auto& allowed : spec.choices)
             known = known || allowed == word;
         if (!known) refuse(spec, shown_value, "is not a known choice");
+    } else if (spec.type == ParameterType::real && std::holds_alternative<std::string>(value)) {
+        if (!is_keyword(spec, std::get<std::string>(value)))
+            refuse(spec, shown_value, "is not a real number");
     } else if (spec.type != ParameterType::boolean) {
         const double x = spec.type == ParameterType::real ? std::get<double>(value)
                                                           : static_cast<double>(std::get<long long>(value));
@@ -225,6 +249,10 @@ void Parameters::set_from_text(const std::string& key, const std::string& text)
     const ParameterSpec& s = spec(key);
     switch (s.type) {
     case ParameterType::real: {
+        if (is_keyword(s, text)) {
+            assign(s, text, text);
+            return;
+        }
         auto x = parse_real(text, s.accepts_infinity);
         if (!x) refuse(s, text, "is not a real number");
         assign(s, *x, text);
@@ -269,6 +297,10 @@ void Parameters::set_from_toml(const toml::table& table, const std::string& orig
         try {
             switch (s->type) {
             case ParameterType::real: {
+                if (node.is_string() && is_keyword(*s, *node.value<std::string>())) {
+                    assign(*s, *node.value<std::string>(), shown.str());
+                    break;
+                }
                 std::optional<double> x;
                 if (node.is_floating_point() || node.is_integer())
                     x = node.value<double>();
@@ -310,7 +342,18 @@ const ParameterValue& Parameters::value(const std::string& name, ParameterType e
 
 double Parameters::real(const std::string& name) const
 {
-    return std::get<double>(value(name, ParameterType::real));
+    const ParameterValue& v = value(name, ParameterType::real);
+    if (const auto* word = std::get_if<std::string>(&v))
+        throw std::logic_error("parameter '" + name + "' holds the keyword '" + *word +
+                               "'; ask Parameters::keyword first");
+    return std::get<double>(v);
+}
+
+std::optional<std::string> Parameters::keyword(const std::string& name) const
+{
+    const ParameterValue& v = value(name, ParameterType::real);
+    if (const auto* word = std::get_if<std::string>(&v)) return *word;
+    return std::nullopt;
 }
 
 long long Parameters::integer(const std::string& name) const
@@ -333,7 +376,8 @@ nlohmann::json Parameters::to_json() const
     nlohmann::json json = nlohmann::json::object();
     for (const auto& s : specs_) {
         const auto& v = values_.at(s.name);
-        if (s.type == ParameterType::real && std::isinf(std::get<double>(v)))
+        if (s.type == ParameterType::real && std::holds_alternative<double>(v) &&
+            std::isinf(std::get<double>(v)))
             json[s.name] = "inf";
         else
             std::visit([&](const auto& x) { json[s.name] = x; }, v);

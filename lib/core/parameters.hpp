@@ -40,8 +40,9 @@ struct ParameterSpec
     double max = std::numeric_limits<double>::infinity();
     bool min_inclusive = true;
     bool max_inclusive = true;
-    bool accepts_infinity = false;    // real parameters only: the literal "inf" is a meaningful value
-    std::vector<std::string> choices; // choice parameters only
+    bool accepts_infinity = false;     // real parameters only: the literal "inf" is a meaningful value
+    std::vector<std::string> keywords; // real parameters only: words that stand for a computed value
+    std::vector<std::string> choices;  // choice parameters only
 
     static ParameterSpec real(std::string name, double value, std::string unit, std::string description);
     static ParameterSpec integer(std::string name, long long value, std::string unit,
@@ -56,6 +57,10 @@ struct ParameterSpec
     ParameterSpec& below(double upper);    // value < upper
     ParameterSpec& at_most(double upper);  // value <= upper
     ParameterSpec& infinity_allowed();     // "inf" is accepted (e.g. eta = inf: incompressible core)
+    // A word accepted in place of a number, whose value the scene computes (e.g. A0 = min: the shape
+    // parameter of the regular polygon). keyword_by_default also makes it the default.
+    ParameterSpec& keyword_allowed(std::string word);
+    ParameterSpec& keyword_by_default(std::string word);
 
     std::string type_name() const;
     std::string allowed() const; // human-readable statement of what is allowed
@@ -74,7 +79,9 @@ class Parameters
     // Every key of a TOML table except `scene`; `origin` names the file in messages.
     void set_from_toml(const toml::table& table, const std::string& origin);
 
-    double real(const std::string& name) const;
+    double real(const std::string& name) const; // a logic error if the parameter holds a keyword
+    // The keyword a real parameter holds, if it holds one instead of a number.
+    std::optional<std::string> keyword(const std::string& name) const;
     long long integer(const std::string& name) const;
     bool boolean(const std::string& name) const;
     const std::string& choice(const std::string& name) const;

@@ -21,6 +21,9 @@ Parameters example()
         ParameterSpec::integer("nodes", 64, "1", "vertices").at_least(3),
         ParameterSpec::boolean("unload", true, "unload after loading"),
         ParameterSpec::choice("support", "cantilever", {"cantilever", "simple"}, "beam support"),
+        ParameterSpec::real("A0", 0.0, "1", "preferred shape parameter")
+            .at_least(1.0)
+            .keyword_by_default("min"),
     });
 }
 
@@ -73,4 +76,27 @@ TEST_CASE("TOML values: integers are accepted for reals, not the reverse; inf is
     CHECK_THROWS_AS(p.set_from_toml(toml::parse("nodes = 8.0\n"), "test.toml"), InputError);
     CHECK_THROWS_AS(p.set_from_toml(toml::parse("nu = inf\n"), "test.toml"), InputError);
     CHECK_THROWS_AS(p.set_from_toml(toml::parse("unload = 1\n"), "test.toml"), InputError);
+}
+
+TEST_CASE("a keyword stands in for a computed real value; other words are still refused")
+{
+    Parameters p = example();
+    CHECK(p.keyword("A0") == "min"); // the default
+    CHECK_THROWS_AS((void)p.real("A0"), std::logic_error);
+    p.set_from_text("A0", "1.2");
+    CHECK_FALSE(p.keyword("A0"));
+    CHECK(p.real("A0") == 1.2);
+    CHECK_THROWS_AS(p.set_from_text("A0", "max"), InputError);
+    CHECK_THROWS_AS(p.set_from_text("A0", "0.9"), InputError); // the range still holds for numbers
+    CHECK(p.to_json()["A0"] == 1.2);
+    p.set_from_toml(toml::parse("A0 = 'min'\n"), "test.toml");
+    CHECK(p.keyword("A0") == "min");
+    CHECK(p.to_json()["A0"] == "min");
+    CHECK_FALSE(p.keyword("nu"));
+    try {
+        p.set_from_text("A0", "max");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()) ==
+              "parameter 'A0' = 'max' is not a real number; allowed: a real number >= 1, or min [1]");
+    }
 }
