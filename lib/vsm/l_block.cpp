@@ -57,7 +57,8 @@ LBlockResult run_l_block(const LBlockSetup& s, long stride,
     const long load_steps = static_cast<long>(std::ceil(load_end / dt_limit));
     const double dt = load_end / static_cast<double>(load_steps);
     const long steps = static_cast<long>(std::ceil(s.end_time / dt));
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0);
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
 
     const auto sample = [&]() {
         const Points<3> x = integrator.positions();

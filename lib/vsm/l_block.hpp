@@ -20,6 +20,7 @@ struct LBlockSetup
     Vec3 load{150, 300, 900}; // N/m^2, multiplied by p(t)
     double end_time = 55;     // s
     double cfl = 0.3;
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct LBlockSample

@@ -32,6 +32,7 @@ struct PatchSetup
     double hold_time = 10; // s
     double cfl = 0.3;      // dt = cfl L_min / c_p
     double damping = 40;   // 1/s, mass-proportional (near critical for the slowest mode)
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct PatchResult

@@ -95,7 +95,8 @@ PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchS
     const Model model(build_reference_cells(X, domain, 2 * spacing), domain, bc, s.material, s.options);
 
     const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0);
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     PunchResult r;
     r.particles = static_cast<int>(X.cols());
     r.dt = dt;

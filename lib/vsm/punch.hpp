@@ -26,6 +26,7 @@ struct PunchSetup
     double punch_velocity = 0.1;                     // m/s, downwards
     std::vector<double> snapshot_strains{0.15, 0.3}; // punch displacement / height; the run ends at the last
     double cfl = 0.3;
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct PunchSnapshot

@@ -277,8 +277,7 @@ std::vector<double> Model::pressures(const Points<3>& x, double t) const
     const LameParameters lame = material_.lame();
     std::vector<double> p;
     for (const Mat3& F : deformation_gradients(x, t)) {
-        const Mat3 sigma = neo_hookean_stress(F, lame) * F.transpose() / F.determinant();
-        p.push_back(-sigma.trace() / 3.0);
+        p.push_back(-neo_hookean_cauchy_stress(F, lame).trace() / 3.0);
     }
     return p;
 }
