@@ -4,6 +4,7 @@
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
+#include "vsm/stability.hpp"
 
 #include <cmath>
 
@@ -100,6 +101,7 @@ PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchS
     PunchResult r;
     r.particles = static_cast<int>(X.cols());
     r.dt = dt;
+    r.dt_limit = predicted_time_step_limit(model);
     for (double strain : s.snapshot_strains) {
         const double t_snapshot = strain * height / velocity;
         while (integrator.state().t + 0.5 * dt < t_snapshot)

@@ -44,6 +44,7 @@ struct PunchResult
     int particles = 0;
     long steps = 0;
     double dt = 0;
+    double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]
     std::vector<PunchSnapshot> snapshots;
 };
 

@@ -3,6 +3,7 @@
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
+#include "vsm/stability.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -123,6 +124,7 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
     r.displacement_error_l2 = r.error.l2;
     r.spacing = spacing;
     r.dt = dt;
+    r.dt_limit = predicted_time_step_limit(model);
     r.steps = steps;
     r.particles = static_cast<int>(X.cols());
     return r;

@@ -60,6 +60,7 @@ struct SwingingCubeResult
     Points<3> X;                      // reference positions
     std::vector<double> initial_von_mises; // von Mises stress of each particle at t = 0 [Pa] (Fig. 4)
     double dt = 0;
+    double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]
     long steps = 0;
     int particles = 0;
 };

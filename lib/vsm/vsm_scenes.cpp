@@ -143,6 +143,7 @@ void run_swinging_cube_scene(const Parameters& p, RunContext& context)
     out["spacing"] = r.spacing;
     out["particles"] = r.particles;
     out["dt"] = r.dt;
+    out["dt_over_limit"] = r.dt / r.dt_limit; // predicted limit C_stab L_min / c_eff (vsm/stability.hpp)
     out["omega"] = s.cube.angular_frequency();
     out["period"] = 2 * std::numbers::pi / s.cube.angular_frequency();
     out["run_wall_time_s"] = wall; // reference cells + model setup + time stepping
@@ -251,6 +252,7 @@ void run_punch_scene(const Parameters& p, RunContext& context)
     out["jitter"] = s.jitter; // effective: 0 for the regular arrangement
     out["particles"] = r.particles;
     out["dt"] = r.dt;
+    out["dt_over_limit"] = r.dt / r.dt_limit; // predicted limit C_stab L_min / c_eff (vsm/stability.hpp)
     out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
 }
 
