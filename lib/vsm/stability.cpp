@@ -41,7 +41,8 @@ double highest_frequency(const Model& model, const Points<3>& x, double t, int i
     // K v by central differences, step relative to the particle spacing (forces are smooth in x).
     const double epsilon = 1e-7 * model.min_branch_length();
     const auto stiffness_times = [&](const Eigen::VectorXd& v) {
-        const Points<3> dv = Eigen::Map<const Points<3>>(v.data(), 3, n) * (epsilon / v.cwiseAbs().maxCoeff());
+        const Points<3> dv =
+            Eigen::Map<const Points<3>>(v.data(), 3, n) * (epsilon / v.cwiseAbs().maxCoeff());
         const Points<3> df = model.forces(x + dv, t) - model.forces(x - dv, t);
         return Eigen::VectorXd(-Eigen::Map<const Eigen::VectorXd>(df.data(), 3 * n) *
                                (v.cwiseAbs().maxCoeff() / (2 * epsilon)));

@@ -62,7 +62,8 @@ SwingingCubeError measure_error(const SwingingCube& cube, const Points<3>& X, co
     double residual2 = 0;
     for (Eigen::Index a = 0; a < X.cols(); ++a) {
         const Vec3 Xa = X.col(a);
-        residual2 += (Vec3(x.col(a) - X.col(a)) - e.mode_amplitude * cube.displacement(Xa, 0.0)).squaredNorm();
+        residual2 +=
+            (Vec3(x.col(a) - X.col(a)) - e.mode_amplitude * cube.displacement(Xa, 0.0)).squaredNorm();
     }
     e.residual = std::sqrt(residual2 / mode_norm2);
     return e;
@@ -92,7 +93,8 @@ Model swinging_cube_model(const SwingingCubeSetup& s, const Points<3>& X)
 }
 
 SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
-                                     const std::function<void(const SwingingCubeError&)>& observe, int samples)
+                                     const std::function<void(const SwingingCubeError&)>& observe,
+                                     int samples)
 {
     const double spacing = s.cube.length / s.per_side;
     const Points<3> X = swinging_cube_particles(s);
@@ -107,8 +109,7 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
     SwingingCubeResult r;
     r.initial_von_mises.reserve(static_cast<std::size_t>(X.cols()));
     for (const Mat3& F : model.deformation_gradients(x0, 0.0))
-        r.initial_von_mises.push_back(
-            von_mises_stress(neo_hookean_cauchy_stress(F, s.cube.material.lame())));
+        r.initial_von_mises.push_back(von_mises_stress(neo_hookean_cauchy_stress(F, s.cube.material.lame())));
     Leapfrog integrator(model, x0, Points<3>::Zero(3, X.cols()), dt, 0.0,
                         s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     const long stride = samples > 0 ? std::max(1L, steps / samples) : 0;

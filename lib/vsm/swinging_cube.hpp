@@ -54,10 +54,10 @@ struct SwingingCubeError
 
 struct SwingingCubeResult
 {
-    double displacement_error_l2 = 0; // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2)
-    SwingingCubeError error;          // the split of the final error
-    double spacing = 0;               // mean particle spacing L / per_side [m]
-    Points<3> X;                      // reference positions
+    double displacement_error_l2 = 0;      // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2)
+    SwingingCubeError error;               // the split of the final error
+    double spacing = 0;                    // mean particle spacing L / per_side [m]
+    Points<3> X;                           // reference positions
     std::vector<double> initial_von_mises; // von Mises stress of each particle at t = 0 [Pa] (Fig. 4)
     double dt = 0;
     double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]

@@ -48,10 +48,11 @@ ParameterSpec jitter_seed()
 
 ParameterSpec time_step_check()
 {
-    return ParameterSpec::boolean("time_step_check", true,
-                                  "refuse a time step above the predicted stability limit C_stab L_min / c_eff "
-                                  "(vsm/stability.hpp) before the run (exit 3); false only for stability "
-                                  "studies");
+    return ParameterSpec::boolean(
+        "time_step_check", true,
+        "refuse a time step above the predicted stability limit C_stab L_min / c_eff "
+        "(vsm/stability.hpp) before the run (exit 3); false only for stability "
+        "studies");
 }
 
 ParameterSpec internal_force_parameter(const std::string& default_value)
@@ -135,8 +136,8 @@ void run_swinging_cube_scene(const Parameters& p, RunContext& context)
     out["displacement_error_l2"] = r.displacement_error_l2;
     out["displacement_error_l2_boundary_layer"] = r.error.boundary_layer;
     out["displacement_error_l2_interior"] = r.error.interior;
-    // The split |e|^2 = |c - cos(omega t)|^2 |phi|^2 + |r|^2 (r orthogonal to phi), normalised like the total:
-    // the error of the swinging mode itself (phase and amplitude) and the rest (other modes).
+    // The split |e|^2 = |c - cos(omega t)|^2 |phi|^2 + |r|^2 (r orthogonal to phi), normalised like the
+    // total: the error of the swinging mode itself (phase and amplitude) and the rest (other modes).
     const double cos_wt = std::cos(s.cube.angular_frequency() * r.error.t);
     out["displacement_error_mode_part"] = std::abs(r.error.mode_amplitude - cos_wt) / std::abs(cos_wt);
     out["displacement_error_other_part"] = r.error.residual / std::abs(cos_wt);

@@ -25,8 +25,8 @@ Model cube_model(int n, double jitter, double nu, double xi, Walls walls, Points
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Ones());
     BoundaryConditions bc;
     using K = BoundaryKind;
-    bc.kind = walls == Walls::swinging ? std::vector<K>{K::symmetric, K::antisymmetric, K::symmetric,
-                                                        K::antisymmetric, K::symmetric, K::antisymmetric}
+    bc.kind = walls == Walls::swinging ? std::vector<K>{K::symmetric,     K::antisymmetric, K::symmetric,
+                                                        K::antisymmetric, K::symmetric,     K::antisymmetric}
               : walls == Walls::total  ? std::vector<K>(6, K::total)
                                        : std::vector<K>(6, K::free);
     bc.displacement = [](int, const Vec3&, double) { return Vec3::Zero(); };
