@@ -320,6 +320,8 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
                 if (!nb.ghost())
                     f.col(a) += Pa * nb.B_ab - P[static_cast<std::size_t>(nb.particle)] * nb.B_ba;
         }
+        // Body force m_a g, eq. (39) (printed without m_a; the m_a follows from eq. (35)).
+        if (options_.gravity != Vec3::Zero()) f.col(a) += mass_[ua] * options_.gravity;
         // Reactions D_ab P_a A_ab on displacement boundaries and prescribed tractions A_ab T_ab, eq. (39).
         for (const Ghost& g : ghosts_[ua]) {
             const Neighbour& nb = list[static_cast<std::size_t>(g.slot)];

@@ -15,9 +15,9 @@ set arrow 1 from 1, graph 0 to 1, graph 1 nohead dt 2
 plot datafile using (column("time_step_check") == 0 && column("exit_code") == 0 ? column("cfl") * ratio : NaN):"exit_code" \
         ls 1 pt 7 ps 1.5 title "completed", \
      datafile using (column("time_step_check") == 0 && column("exit_code") == 3 ? column("cfl") * ratio : NaN):"exit_code" \
-        ls 2 pt 5 ps 1.5 title "stopped: J <= 0", \
+        ls 2 pt 5 ps 1.5 title "J <= 0", \
      datafile using (column("time_step_check") == 1 && column("cfl") != 0.3 ? column("cfl") * ratio : NaN):"exit_code" \
-        ls 3 pt 9 ps 1.5 title "check on: refused before the run"
+        ls 3 pt 9 ps 1.5 title "refused (check on)"
 unset arrow 1
 set autoscale y
 set key top right
@@ -29,8 +29,7 @@ set xlabel "Poisson ratio nu"
 set xtics 0.05
 set ylabel "pressure roughness"
 plot datafile using "nu":"pressure_roughness_final" ls 2 pt 7 with linespoints title "xi = 1"
-unset xtics
-set xtics
+set xtics 0.2
 set xlabel "punch depth / height"
 set ylabel "exit code (3: J <= 0)"
 set yrange [-0.5:3.5]
