@@ -76,7 +76,9 @@ LBlockResult run_l_block(const LBlockSetup& s, long stride,
     r.dt = dt;
     r.steps = steps;
     r.impulse_scale = thickness * thickness * 6.25 * load.norm(); // A * int p dt * |load|, int p dt = 6.25 s
-    const Vec3 p0 = sample().first.linear;
+    const auto [initial, x0] = sample();
+    const Vec3 p0 = initial.linear;
+    observe(initial, x0); // t = 0: the reference shape and zero momentum
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
         const bool at_load_end = k == load_steps;

@@ -43,7 +43,7 @@ struct LBlockResult
 
 double l_block_pulse(double t); // p(t)
 
-// Runs the block; observe(sample, positions) is called every `stride` steps (and at the end).
+// Runs the block; observe(sample, positions) is called at t = 0, every `stride` steps and at the end.
 LBlockResult run_l_block(const LBlockSetup& setup, long stride,
                          const std::function<void(const LBlockSample&, const Points<3>&)>& observe);
 

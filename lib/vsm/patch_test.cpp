@@ -44,6 +44,7 @@ PatchResult run_patch_test(const PatchSetup& s)
     const Model model(build_reference_cells(X, domain, 2.0 * h), domain, bc, s.material, s.options);
 
     PatchResult result;
+    result.X = X;
     result.particles = static_cast<int>(model.size());
     result.force_scale = s.material.young * s.alpha * h * h;
     const Points<3> exact = X + G * X;

@@ -43,6 +43,7 @@ struct PatchResult
     long steps = 0;
     int particles = 0;
     double dt = 0;
+    Points<3> X; // reference positions of the particles (Fig. 3)
 };
 
 Mat3 patch_displacement_gradient(double alpha); // alpha M of eq. (52)

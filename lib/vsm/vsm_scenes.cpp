@@ -82,6 +82,10 @@ void run_patch(const Parameters& p, RunContext& context)
     context.record_seed(s.seed);
     const PatchResult r = run_patch_test(s);
     context.count_steps(r.steps);
+    auto& particles =
+        context.table("particles.dat", {{"X1", "m", "reference position"}, {"X2", "m", ""}, {"X3", "m", ""}});
+    for (Eigen::Index a = 0; a < r.X.cols(); ++a)
+        particles.row({r.X(0, a), r.X(1, a), r.X(2, a)});
     auto& out = context.summary();
     out["max_error"] = r.max_error;
     out["test_id"] = static_cast<int>(s.variant) + 1; // 1 = A, 2 = B, 3 = C (numeric, for tables)
