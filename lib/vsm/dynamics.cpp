@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/integrators.hpp"
+#include "vsm/stability.hpp"
 
 #include <cmath>
 
@@ -19,9 +20,10 @@ Points<3> unflatten(const Eigen::VectorXd& v)
 } // namespace
 
 Leapfrog::Leapfrog(const Model& model, const Points<3>& x0, const Points<3>& v0, double dt, double damping,
-                   double t0)
+                   TimeStepCheck check, double t0)
     : model_(model), dt_(dt), damping_(damping)
 {
+    if (check == TimeStepCheck::refuse_above_limit) check_time_step(model, dt);
     const auto n = static_cast<Eigen::Index>(model.size());
     mass_.resize(3 * n);
     for (Eigen::Index a = 0; a < n; ++a)
@@ -40,7 +42,7 @@ Eigen::VectorXd Leapfrog::force_flat(const Eigen::VectorXd& x, const Eigen::Vect
     Eigen::VectorXd f = flatten(model_.forces(unflatten(x), t, state_.step, &velocities));
     if (!f.allFinite())
         throw NumericalError("non-finite force", state_.step,
-                             "time step above the stability limit dt ~ h / c_p");
+                             "time step above the stability limit (see vsm/stability.hpp)");
     if (damping_ > 0) f.array() -= damping_ * mass_.array() * v.array(); // mass-proportional damping
     return f;
 }

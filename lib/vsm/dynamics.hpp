@@ -17,12 +17,17 @@ struct LeapfrogState
     long step = 0;
 };
 
+// Whether the integrator refuses a time step above the predicted stability limit (vsm/stability.hpp) before
+// the first step. `off` is for stability studies only: an unstable run then ends with J <= 0 (exit 3).
+enum class TimeStepCheck { refuse_above_limit, off };
+
 class Leapfrog
 {
   public:
     // Starts at positions x0 with velocities v0 at t0: v(t0 - dt/2) = v0 - dt/2 a(t0) (second-order start).
+    // Throws NumericalError (step 0) when dt exceeds the predicted limit, unless check is off.
     Leapfrog(const Model& model, const Points<3>& x0, const Points<3>& v0, double dt, double damping,
-             double t0 = 0);
+             TimeStepCheck check = TimeStepCheck::refuse_above_limit, double t0 = 0);
 
     void step();
     const LeapfrogState& state() const { return state_; }

@@ -57,7 +57,8 @@ LBlockResult run_l_block(const LBlockSetup& s, long stride,
     const long load_steps = static_cast<long>(std::ceil(load_end / dt_limit));
     const double dt = load_end / static_cast<double>(load_steps);
     const long steps = static_cast<long>(std::ceil(s.end_time / dt));
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0);
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
 
     const auto sample = [&]() {
         const Points<3> x = integrator.positions();
@@ -75,7 +76,9 @@ LBlockResult run_l_block(const LBlockSetup& s, long stride,
     r.dt = dt;
     r.steps = steps;
     r.impulse_scale = thickness * thickness * 6.25 * load.norm(); // A * int p dt * |load|, int p dt = 6.25 s
-    const Vec3 p0 = sample().first.linear;
+    const auto [initial, x0] = sample();
+    const Vec3 p0 = initial.linear;
+    observe(initial, x0); // t = 0: the reference shape and zero momentum
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
         const bool at_load_end = k == load_steps;

@@ -20,6 +20,7 @@ struct LBlockSetup
     Vec3 load{150, 300, 900}; // N/m^2, multiplied by p(t)
     double end_time = 55;     // s
     double cfl = 0.3;
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct LBlockSample
@@ -42,7 +43,7 @@ struct LBlockResult
 
 double l_block_pulse(double t); // p(t)
 
-// Runs the block; observe(sample, positions) is called every `stride` steps (and at the end).
+// Runs the block; observe(sample, positions) is called at t = 0, every `stride` steps and at the end.
 LBlockResult run_l_block(const LBlockSetup& setup, long stride,
                          const std::function<void(const LBlockSample&, const Points<3>&)>& observe);
 

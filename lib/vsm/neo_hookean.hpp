@@ -39,4 +39,17 @@ inline Mat3 neo_hookean_stress(const Mat3& F, const LameParameters& m)
     return m.mu * (F - F_inv_T) + m.lambda * std::log(F.determinant()) * F_inv_T;
 }
 
+// Cauchy stress sigma = P F^T / J of the neo-Hookean material [Pa] (valid for J > 0).
+inline Mat3 neo_hookean_cauchy_stress(const Mat3& F, const LameParameters& m)
+{
+    return neo_hookean_stress(F, m) * F.transpose() / F.determinant();
+}
+
+// Von Mises equivalent stress sqrt(3/2 s : s), s = sigma - tr(sigma) I / 3 the deviator [Pa].
+inline double von_mises_stress(const Mat3& sigma)
+{
+    const Mat3 s = sigma - sigma.trace() / 3.0 * Mat3::Identity();
+    return std::sqrt(1.5 * s.cwiseProduct(s).sum());
+}
+
 } // namespace softgrain::vsm

@@ -44,6 +44,7 @@ PatchResult run_patch_test(const PatchSetup& s)
     const Model model(build_reference_cells(X, domain, 2.0 * h), domain, bc, s.material, s.options);
 
     PatchResult result;
+    result.X = X;
     result.particles = static_cast<int>(model.size());
     result.force_scale = s.material.young * s.alpha * h * h;
     const Points<3> exact = X + G * X;
@@ -53,7 +54,8 @@ PatchResult run_patch_test(const PatchSetup& s)
         return result;
     }
     const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, s.damping);
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, s.damping,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     const long steps = static_cast<long>(std::ceil((s.ramp_time + s.hold_time) / dt));
     for (long k = 0; k < steps; ++k)
         integrator.step();

@@ -28,10 +28,11 @@ struct PatchSetup
     double alpha = 1e-4;
     Material material{1.0e6, 0.3, 1.0e3};
     ModelOptions options{InternalForce::eq41, 1.0, 1.0};
-    double ramp_time = 50; // s
-    double hold_time = 10; // s
-    double cfl = 0.3;      // dt = cfl L_min / c_p
-    double damping = 40;   // 1/s, mass-proportional (near critical for the slowest mode)
+    double ramp_time = 50;       // s
+    double hold_time = 10;       // s
+    double cfl = 0.3;            // dt = cfl L_min / c_p
+    double damping = 40;         // 1/s, mass-proportional (near critical for the slowest mode)
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct PatchResult
@@ -42,6 +43,7 @@ struct PatchResult
     long steps = 0;
     int particles = 0;
     double dt = 0;
+    Points<3> X; // reference positions of the particles (Fig. 3)
 };
 
 Mat3 patch_displacement_gradient(double alpha); // alpha M of eq. (52)

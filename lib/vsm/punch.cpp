@@ -4,6 +4,7 @@
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
+#include "vsm/stability.hpp"
 
 #include <cmath>
 
@@ -95,10 +96,12 @@ PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchS
     const Model model(build_reference_cells(X, domain, 2 * spacing), domain, bc, s.material, s.options);
 
     const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0);
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     PunchResult r;
     r.particles = static_cast<int>(X.cols());
     r.dt = dt;
+    r.dt_limit = predicted_time_step_limit(model);
     for (double strain : s.snapshot_strains) {
         const double t_snapshot = strain * height / velocity;
         while (integrator.state().t + 0.5 * dt < t_snapshot)

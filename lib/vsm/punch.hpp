@@ -26,6 +26,7 @@ struct PunchSetup
     double punch_velocity = 0.1;                     // m/s, downwards
     std::vector<double> snapshot_strains{0.15, 0.3}; // punch displacement / height; the run ends at the last
     double cfl = 0.3;
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
 };
 
 struct PunchSnapshot
@@ -43,6 +44,7 @@ struct PunchResult
     int particles = 0;
     long steps = 0;
     double dt = 0;
+    double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]
     std::vector<PunchSnapshot> snapshots;
 };
 

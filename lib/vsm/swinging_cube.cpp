@@ -3,7 +3,9 @@
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
+#include "vsm/stability.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -29,20 +31,74 @@ Vec3 SwingingCube::displacement(const Vec3& X, double t) const
                                                     amplitude.z() * c.x() * c.y() * s.z());
 }
 
-SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s)
+namespace {
+
+SwingingCubeError measure_error(const SwingingCube& cube, const Points<3>& X, const Points<3>& x, double t,
+                                double spacing)
+{
+    double error2 = 0, norm2 = 0, layer_error2 = 0, layer_norm2 = 0, mode_dot = 0, mode_norm2 = 0;
+    for (Eigen::Index a = 0; a < X.cols(); ++a) {
+        const Vec3 Xa = X.col(a);
+        const Vec3 u = x.col(a) - X.col(a);
+        const Vec3 exact = cube.displacement(Xa, t);
+        const Vec3 phi = cube.displacement(Xa, 0.0);
+        const double e2 = (u - exact).squaredNorm();
+        error2 += e2;
+        norm2 += exact.squaredNorm();
+        const double to_face = std::min(Xa.minCoeff(), (Vec3::Constant(cube.length) - Xa).minCoeff());
+        if (to_face < spacing) {
+            layer_error2 += e2;
+            layer_norm2 += exact.squaredNorm();
+        }
+        mode_dot += u.dot(phi);
+        mode_norm2 += phi.squaredNorm();
+    }
+    SwingingCubeError e;
+    e.t = t;
+    e.l2 = std::sqrt(error2 / norm2);
+    e.boundary_layer = layer_norm2 > 0 ? std::sqrt(layer_error2 / layer_norm2) : 0.0;
+    e.interior = norm2 > layer_norm2 ? std::sqrt((error2 - layer_error2) / (norm2 - layer_norm2)) : 0.0;
+    e.mode_amplitude = mode_dot / mode_norm2;
+    double residual2 = 0;
+    for (Eigen::Index a = 0; a < X.cols(); ++a) {
+        const Vec3 Xa = X.col(a);
+        residual2 +=
+            (Vec3(x.col(a) - X.col(a)) - e.mode_amplitude * cube.displacement(Xa, 0.0)).squaredNorm();
+    }
+    e.residual = std::sqrt(residual2 / mode_norm2);
+    return e;
+}
+
+} // namespace
+
+Points<3> swinging_cube_particles(const SwingingCubeSetup& s)
+{
+    Rng rng(s.seed);
+    const int n = s.per_side;
+    return jittered_lattice(Vec3::Zero(), Vec3::Constant(s.cube.length), {n, n, n}, s.jitter, &rng);
+}
+
+Model swinging_cube_model(const SwingingCubeSetup& s, const Points<3>& X)
 {
     const double L = s.cube.length;
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Constant(L));
-    Rng rng(s.seed);
-    const int n = s.per_side;
-    const Points<3> X = jittered_lattice(Vec3::Zero(), Vec3::Constant(L), {n, n, n}, s.jitter, &rng);
     BoundaryConditions bc;
     // Labels 0, 2, 4: X_i = 0 (symmetric); 1, 3, 5: X_i = L (antisymmetric); the prescribed components are
     // zero.
     bc.kind = {BoundaryKind::symmetric,     BoundaryKind::antisymmetric, BoundaryKind::symmetric,
                BoundaryKind::antisymmetric, BoundaryKind::symmetric,     BoundaryKind::antisymmetric};
     bc.displacement = [](int, const Vec3&, double) { return Vec3::Zero(); };
-    const Model model(build_reference_cells(X, domain, 2.0 * L / n), domain, bc, s.cube.material, s.options);
+    return Model(build_reference_cells(X, domain, 2.0 * L / s.per_side), domain, bc, s.cube.material,
+                 s.options);
+}
+
+SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
+                                     const std::function<void(const SwingingCubeError&)>& observe,
+                                     int samples)
+{
+    const double spacing = s.cube.length / s.per_side;
+    const Points<3> X = swinging_cube_particles(s);
+    const Model model = swinging_cube_model(s, X);
 
     Points<3> x0 = X;
     for (Eigen::Index a = 0; a < X.cols(); ++a)
@@ -50,22 +106,26 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s)
     const long steps = static_cast<long>(
         std::ceil(s.end_time / (s.cfl * model.min_branch_length() / s.cube.material.p_wave_speed())));
     const double dt = s.end_time / static_cast<double>(steps);
-    Leapfrog integrator(model, x0, Points<3>::Zero(3, X.cols()), dt, 0.0);
-    for (long k = 0; k < steps; ++k)
-        integrator.step();
-
-    const Points<3> x = integrator.positions();
-    const double t = integrator.state().t;
-    double error2 = 0, norm2 = 0;
-    for (Eigen::Index a = 0; a < X.cols(); ++a) {
-        const Vec3 exact = s.cube.displacement(X.col(a), t);
-        error2 += (Vec3(x.col(a) - X.col(a)) - exact).squaredNorm();
-        norm2 += exact.squaredNorm();
-    }
     SwingingCubeResult r;
-    r.displacement_error_l2 = std::sqrt(error2 / norm2);
-    r.spacing = L / n;
+    r.initial_von_mises.reserve(static_cast<std::size_t>(X.cols()));
+    for (const Mat3& F : model.deformation_gradients(x0, 0.0))
+        r.initial_von_mises.push_back(von_mises_stress(neo_hookean_cauchy_stress(F, s.cube.material.lame())));
+    Leapfrog integrator(model, x0, Points<3>::Zero(3, X.cols()), dt, 0.0,
+                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
+    const long stride = samples > 0 ? std::max(1L, steps / samples) : 0;
+    if (observe) observe(measure_error(s.cube, X, x0, 0.0, spacing));
+    for (long k = 1; k <= steps; ++k) {
+        integrator.step();
+        if (observe && stride > 0 && (k % stride == 0 || k == steps))
+            observe(measure_error(s.cube, X, integrator.positions(), integrator.state().t, spacing));
+    }
+
+    r.X = X;
+    r.error = measure_error(s.cube, X, integrator.positions(), integrator.state().t, spacing);
+    r.displacement_error_l2 = r.error.l2;
+    r.spacing = spacing;
     r.dt = dt;
+    r.dt_limit = predicted_time_step_limit(model);
     r.steps = steps;
     r.particles = static_cast<int>(X.cols());
     return r;

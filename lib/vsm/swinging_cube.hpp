@@ -11,6 +11,8 @@
 #include "vsm/vsm_model.hpp"
 
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 namespace softgrain::vsm {
 
@@ -33,17 +35,44 @@ struct SwingingCubeSetup
     ModelOptions options{InternalForce::eq43, 1.0, 1.0};
     double end_time = 5e-3; // s
     double cfl = 0.3;
+    bool time_step_check = true; // refuse dt above the predicted limit (vsm/stability.hpp)
+};
+
+// The error of a particle state against eq. (53) at time t, split three ways to tell where it comes from.
+struct SwingingCubeError
+{
+    double t = 0;
+    double l2 = 0; // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2), all particles
+    // The same over the particles whose reference position lies within one spacing L/n of a face (the
+    // boundary layer, where the ghost least squares of eqs. (15)-(24) act) and over the others (interior).
+    double boundary_layer = 0, interior = 0;
+    // Projection of u_a on the exact mode shape phi_a = u(X_a, 0): u_a = c(t) phi_a + r_a. mode_amplitude is
+    // c(t) (exactly cos(omega t)); residual = sqrt(sum |r_a|^2 / sum |phi_a|^2), the part of the error that
+    // is not the swinging mode itself (other modes excited by the discrete initial state, jitter noise).
+    double mode_amplitude = 0, residual = 0;
 };
 
 struct SwingingCubeResult
 {
-    double displacement_error_l2 = 0; // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2)
-    double spacing = 0;               // mean particle spacing L / per_side [m]
+    double displacement_error_l2 = 0;      // sqrt(sum |u_a - u(X_a,t)|^2) / sqrt(sum |u(X_a,t)|^2)
+    SwingingCubeError error;               // the split of the final error
+    double spacing = 0;                    // mean particle spacing L / per_side [m]
+    Points<3> X;                           // reference positions
+    std::vector<double> initial_von_mises; // von Mises stress of each particle at t = 0 [Pa] (Fig. 4)
     double dt = 0;
+    double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]
     long steps = 0;
     int particles = 0;
 };
 
-SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup);
+// The particles (jittered cell-centred lattice) and the model of the cube with its boundary conditions.
+Points<3> swinging_cube_particles(const SwingingCubeSetup& setup);
+Model swinging_cube_model(const SwingingCubeSetup& setup, const Points<3>& X);
+
+// Runs the cube to end_time; observe(error) is called at `samples` evenly spaced steps (and at t = 0) when
+// given, for error histories.
+SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
+                                     const std::function<void(const SwingingCubeError&)>& observe = {},
+                                     int samples = 0);
 
 } // namespace softgrain::vsm

@@ -277,8 +277,7 @@ std::vector<double> Model::pressures(const Points<3>& x, double t) const
     const LameParameters lame = material_.lame();
     std::vector<double> p;
     for (const Mat3& F : deformation_gradients(x, t)) {
-        const Mat3 sigma = neo_hookean_stress(F, lame) * F.transpose() / F.determinant();
-        p.push_back(-sigma.trace() / 3.0);
+        p.push_back(-neo_hookean_cauchy_stress(F, lame).trace() / 3.0);
     }
     return p;
 }
@@ -321,6 +320,8 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
                 if (!nb.ghost())
                     f.col(a) += Pa * nb.B_ab - P[static_cast<std::size_t>(nb.particle)] * nb.B_ba;
         }
+        // Body force m_a g, eq. (39) (printed without m_a; the m_a follows from eq. (35)).
+        if (options_.gravity != Vec3::Zero()) f.col(a) += mass_[ua] * options_.gravity;
         // Reactions D_ab P_a A_ab on displacement boundaries and prescribed tractions A_ab T_ab, eq. (39).
         for (const Ghost& g : ghosts_[ua]) {
             const Neighbour& nb = list[static_cast<std::size_t>(g.slot)];

@@ -59,8 +59,9 @@ struct Material
 struct ModelOptions
 {
     InternalForce internal = InternalForce::eq43;
-    double xi_n = 1, xi_t = 1; // contact factors of eq. (50)
-    double c1 = 0, c2 = 0;     // artificial viscosity constants of eq. (51); 0 = off
+    double xi_n = 1, xi_t = 1;   // contact factors of eq. (50)
+    double c1 = 0, c2 = 0;       // artificial viscosity constants of eq. (51); 0 = off
+    Vec3 gravity = Vec3::Zero(); // g [m/s^2] of the body force m_a g, eqs. (35), (39); zero = off
 };
 
 using Block93 = Eigen::Matrix<double, 9, 3>;
@@ -91,7 +92,7 @@ class Model
     std::vector<Mat3> deformation_gradients(const Points<3>& x, double t) const;
 
     // Forces [N] on every particle at positions x and time t: internal + reactions + tractions (+ contact
-    // when xi > 0). `step` is reported in a NumericalError when some J_a <= 0.
+    // when xi > 0, + gravity m_a g when g != 0). `step` is reported in a NumericalError when some J_a <= 0.
     // With velocities v (and c1 or c2 > 0) the artificial viscous stress of eq. (51) is added to P_a.
     Points<3> forces(const Points<3>& x, double t, long step = 0, const Points<3>* v = nullptr) const;
     // Rate of F_a: sum_c dF_a/dx_c v_c + dF_a/dt (prescribed boundary motion).

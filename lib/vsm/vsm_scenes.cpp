@@ -10,7 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
-
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -46,6 +46,15 @@ ParameterSpec jitter_seed()
     return ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative();
 }
 
+ParameterSpec time_step_check()
+{
+    return ParameterSpec::boolean(
+        "time_step_check", true,
+        "refuse a time step above the predicted stability limit C_stab L_min / c_eff "
+        "(vsm/stability.hpp) before the run (exit 3); false only for stability "
+        "studies");
+}
+
 ParameterSpec internal_force_parameter(const std::string& default_value)
 {
     return ParameterSpec::choice(
@@ -68,10 +77,15 @@ void run_patch(const Parameters& p, RunContext& context)
     s.ramp_time = p.real("ramp_time");
     s.hold_time = p.real("hold_time");
     s.cfl = p.real("cfl");
+    s.time_step_check = p.boolean("time_step_check");
     s.damping = p.real("damping");
     context.record_seed(s.seed);
     const PatchResult r = run_patch_test(s);
     context.count_steps(r.steps);
+    auto& particles =
+        context.table("particles.dat", {{"X1", "m", "reference position"}, {"X2", "m", ""}, {"X3", "m", ""}});
+    for (Eigen::Index a = 0; a < r.X.cols(); ++a)
+        particles.row({r.X(0, a), r.X(1, a), r.X(2, a)});
     auto& out = context.summary();
     out["max_error"] = r.max_error;
     out["test_id"] = static_cast<int>(s.variant) + 1; // 1 = A, 2 = B, 3 = C (numeric, for tables)
@@ -97,16 +111,44 @@ void run_swinging_cube_scene(const Parameters& p, RunContext& context)
     s.options = {internal_force_choice(p), p.real("xi"), p.real("xi")};
     s.end_time = p.real("end_time");
     s.cfl = p.real("cfl");
+    s.time_step_check = p.boolean("time_step_check");
     context.record_seed(s.seed);
+    auto& history = context.table(
+        "error_history.dat",
+        {{"t", "s", "time"},
+         {"error_l2", "1", "normalised L2 displacement error against eq. (53)"},
+         {"error_boundary_layer", "1", "the same over the particles within one spacing of a face"},
+         {"error_interior", "1", "the same over the other particles"},
+         {"mode_amplitude", "1", "projection c(t) of u_a on the mode shape u(X_a, 0) (exact: cos omega t)"},
+         {"residual", "1", "sqrt(sum |u_a - c phi_a|^2 / sum |phi_a|^2): the part that is not the mode"}});
     const auto start = std::chrono::steady_clock::now();
-    const SwingingCubeResult r = run_swinging_cube(s);
+    const SwingingCubeResult r = run_swinging_cube(
+        s,
+        [&](const SwingingCubeError& e) {
+            history.row({e.t, e.l2, e.boundary_layer, e.interior, e.mode_amplitude, e.residual});
+        },
+        static_cast<int>(p.integer("history_samples")));
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     context.count_steps(r.steps);
+    auto& particles = context.table("particles.dat", {{"X1", "m", "reference position"},
+                                                      {"X2", "m", ""},
+                                                      {"X3", "m", ""},
+                                                      {"von_mises", "Pa", "von Mises stress at t = 0"}});
+    for (Eigen::Index a = 0; a < r.X.cols(); ++a)
+        particles.row({r.X(0, a), r.X(1, a), r.X(2, a), r.initial_von_mises[static_cast<std::size_t>(a)]});
     auto& out = context.summary();
     out["displacement_error_l2"] = r.displacement_error_l2;
+    out["displacement_error_l2_boundary_layer"] = r.error.boundary_layer;
+    out["displacement_error_l2_interior"] = r.error.interior;
+    // The split |e|^2 = |c - cos(omega t)|^2 |phi|^2 + |r|^2 (r orthogonal to phi), normalised like the
+    // total: the error of the swinging mode itself (phase and amplitude) and the rest (other modes).
+    const double cos_wt = std::cos(s.cube.angular_frequency() * r.error.t);
+    out["displacement_error_mode_part"] = std::abs(r.error.mode_amplitude - cos_wt) / std::abs(cos_wt);
+    out["displacement_error_other_part"] = r.error.residual / std::abs(cos_wt);
     out["spacing"] = r.spacing;
     out["particles"] = r.particles;
     out["dt"] = r.dt;
+    out["dt_over_limit"] = r.dt / r.dt_limit; // predicted limit C_stab L_min / c_eff (vsm/stability.hpp)
     out["omega"] = s.cube.angular_frequency();
     out["period"] = 2 * std::numbers::pi / s.cube.angular_frequency();
     out["run_wall_time_s"] = wall; // reference cells + model setup + time stepping
@@ -122,6 +164,7 @@ void run_l_block_scene(const Parameters& p, RunContext& context)
     s.load = Vec3(p.real("load_1"), p.real("load_2"), p.real("load_3"));
     s.end_time = p.real("end_time");
     s.cfl = p.real("cfl");
+    s.time_step_check = p.boolean("time_step_check");
     if (s.end_time <= 5.0)
         throw InputError("end_time = " + std::to_string(s.end_time) + " must exceed 5 s (the load)");
     auto& momentum =
@@ -185,6 +228,7 @@ void run_punch_scene(const Parameters& p, RunContext& context)
     s.punch_velocity = p.real("punch_velocity");
     s.snapshot_strains = {0.5 * p.real("final_strain"), p.real("final_strain")};
     s.cfl = p.real("cfl");
+    s.time_step_check = p.boolean("time_step_check");
     context.record_seed(s.seed);
     auto& snapshots = context.table("snapshots.dat", {{"strain", "1", "punch displacement / height"},
                                                       {"x1", "m", "current position"},
@@ -213,6 +257,7 @@ void run_punch_scene(const Parameters& p, RunContext& context)
     out["jitter"] = s.jitter; // effective: 0 for the regular arrangement
     out["particles"] = r.particles;
     out["dt"] = r.dt;
+    out["dt_over_limit"] = r.dt / r.dt_limit; // predicted limit C_stab L_min / c_eff (vsm/stability.hpp)
     out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
 }
 
@@ -248,6 +293,7 @@ void register_vsm_scenes(SceneRegistry& registry)
                                 "B, C: time at full load before the error is measured")
                 .positive(),
             ParameterSpec::real("cfl", 0.3, "1", "time step dt = cfl L_min / c_p").positive().at_most(1.0),
+            time_step_check(),
             ParameterSpec::real("damping", 40.0, "1/s", "B, C: mass-proportional damping coefficient")
                 .non_negative(),
         },
@@ -273,10 +319,14 @@ void register_vsm_scenes(SceneRegistry& registry)
             ParameterSpec::real("xi", 1.0, "1", "contact factors xi_n = xi_t of eq. (50)").non_negative(),
             internal_force_parameter("eq43"),
             ParameterSpec::real("end_time", 5e-3, "s", "time at which the error is measured").positive(),
+            ParameterSpec::integer("history_samples", 20, "1",
+                                   "samples of the error history (error_history.dat), besides t = 0")
+                .non_negative(),
             ParameterSpec::real("cfl", 0.3, "1",
                                 "time step dt = cfl L_min / c_p (rounded down to hit end_time)")
                 .positive()
                 .at_most(2.0),
+            time_step_check(),
         },
         run_swinging_cube_scene,
     });
@@ -296,6 +346,7 @@ void register_vsm_scenes(SceneRegistry& registry)
             ParameterSpec::real("load_3", 900.0, "Pa", "component 3 (printed 900; 450 in related papers)"),
             ParameterSpec::real("end_time", 55.0, "s", "duration (load acts for 5 s)").positive(),
             ParameterSpec::real("cfl", 0.3, "1", "time step dt = cfl L_min / c_p").positive().at_most(2.0),
+            time_step_check(),
         },
         run_l_block_scene,
     });
@@ -331,6 +382,7 @@ void register_vsm_scenes(SceneRegistry& registry)
                 .positive()
                 .below(1.0),
             ParameterSpec::real("cfl", 0.3, "1", "time step dt = cfl L_min / c_p").positive().at_most(2.0),
+            time_step_check(),
         },
         run_punch_scene,
     });
