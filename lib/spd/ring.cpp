@@ -59,6 +59,7 @@ RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure)
     const int ring = add_ring(model, setup, pressure);
     const double A0 = model.area(ring);
     const double dt = setup.dt_factor * model.critical_time_step();
+    model.check_time_step(dt);
     // The uniform load excites only the breathing mode, of radial stiffness per vertex
     // 4 k_s sin^2(pi/N) (eq. (21)) + 2 K_Omega s l0 / R (eq. (4)); damping critical for it.
     const double k_radial = 4 * sc.laws.k_s * std::pow(std::sin(pi / setup.nodes), 2) +
@@ -97,6 +98,7 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     CompressionResult result;
     result.dt_critical = model.critical_time_step();
     result.dt = setup.dt_factor * result.dt_critical;
+    model.check_time_step(result.dt); // 0.83 dt_c with the critically damped wall contact
     const double omega2 = ovalisation_frequency(setup, sc);
     const double damping = 2 * setup.vertex_mass * omega2;
     const double force_scale = std::min(sc.flexural_rigidity / (R * R), sc.characteristic.F_2star);

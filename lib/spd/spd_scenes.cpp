@@ -79,8 +79,7 @@ RingSetup ring_setup(const Parameters& p)
     r.nodes = static_cast<int>(p.integer("nodes"));
     r.radius = p.real("R");
     r.material = material_of(p);
-    const double eta = p.real("eta");
-    r.eta = std::isinf(eta) ? 1e5 : eta; // decision spd-eta-infinity
+    r.eta = p.real("eta"); // inf: incompressible core, exact area constraint (decision spd-eta-infinity)
     r.dt_factor = p.real("dt_factor");
     return r;
 }
@@ -88,6 +87,9 @@ RingSetup ring_setup(const Parameters& p)
 void run_ring_pressure(const Parameters& p, RunContext& ctx)
 {
     RingSetup setup = ring_setup(p);
+    if (std::isinf(setup.eta))
+        throw InputError("eta = inf: an incompressible core has no volume change under pressure, so K_e is "
+                         "infinite; allowed: a finite eta >= 0");
     const double pressure = p.real("pressure");
     const RingScales sc = ring_scales(setup);
     RingSetup shell_only = setup;
@@ -285,7 +287,8 @@ std::vector<ParameterSpec> ring_parameters(std::vector<ParameterSpec> extra)
         ParameterSpec::integer("nodes", 128, "1", "vertices N of the ring").at_least(8),
         ParameterSpec::real("R", 1.0, "m", "initial radius R0").positive(),
         ParameterSpec::real("eta", 0.0, "1",
-                            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf = 1e5")
+                            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf: incompressible core "
+                            "(exact area constraint, the pressure its multiplier)")
             .non_negative()
             .infinity_allowed(),
         ParameterSpec::real("dt_factor", 0.5, "1", "time step over dt_c = sqrt(m/k_max) (section 2.4)")
