@@ -165,7 +165,12 @@ void ShellModel::contact_forces(double dt)
                 const Vec2 c = vertex(i);
                 for (int k = 0; k < sq.elements(); ++k) {
                     const int a = sq.first + k, b = next(sq, k);
-                    const SegmentProximity prox = point_segment_proximity(c, vertex(a), vertex(b));
+                    const Vec2 A = vertex(a), B = vertex(b);
+                    // Bounding box of the sphero-segment: a cheap rejection before the exact distance.
+                    if (c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
+                        c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach)
+                        continue;
+                    const SegmentProximity prox = point_segment_proximity(c, A, B);
                     if (prox.distance >= reach) continue;
                     const bool last_end = !sq.closed && k == sq.elements() - 1;
                     if (prox.branch == SegmentBranch::end_b && !last_end)
