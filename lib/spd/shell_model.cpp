@@ -132,7 +132,8 @@ void ShellModel::core_forces(int index)
         p += core_p_[index];
     }
     if (p == 0.0) return;
-    f_.segment(2 * s.first, 2 * s.count) += s.depth * p * area_gradient(s, x_.segment(2 * s.first, 2 * s.count));
+    f_.segment(2 * s.first, 2 * s.count) +=
+        s.depth * p * area_gradient(s, x_.segment(2 * s.first, 2 * s.count));
 }
 
 Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const
@@ -245,10 +246,11 @@ void ShellModel::step(double dt, double damping)
 // RATTLE (H. C. Andersen, J. Comput. Phys. 52 (1983) 24) for incompressible cores, eq. (4) in the limit
 // K_Omega -> inf (eta = inf, eq. (24)): velocity Verlet with the constraint force mu dA/dx on each
 // incompressible shell, mu = s p. Position stage: the polygon area is a quadratic form, so
-// A(y + lambda d) = A(y) + lambda dA/dx(y).d + lambda^2 A(d) with y = x + dt v_half, d = dt^2/2 M^-1 dA/dx(x),
-// and A = A0 is solved exactly for lambda (the root of smallest magnitude). Velocity stage: dA/dx . v = 0 at
-// the new positions (linear in mu). f_ keeps the constraint force, so the stored force is the one the shell
-// feels (relaxation criterion) and the next position stage only adds the increment of the multiplier.
+// A(y + lambda d) = A(y) + lambda dA/dx(y).d + lambda^2 A(d) with y = x + dt v_half, d = dt^2/2 M^-1
+// dA/dx(x), and A = A0 is solved exactly for lambda (the root of smallest magnitude). Velocity stage: dA/dx .
+// v = 0 at the new positions (linear in mu). f_ keeps the constraint force, so the stored force is the one
+// the shell feels (relaxation criterion) and the next position stage only adds the increment of the
+// multiplier.
 void ShellModel::step_constrained(double dt, double damping)
 {
     Eigen::VectorXd f = f_;
@@ -269,9 +271,10 @@ void ShellModel::step_constrained(double dt, double damping)
         const double c = area_of(y) - core_V0_[p] / s.depth;
         const double discriminant = b * b - 4 * a * c;
         if (discriminant < 0 || b == 0)
-            throw NumericalError("incompressible core (area constraint)", steps_,
-                                 "no multiplier restores the area within one step: the time step is too large "
-                                 "for the motion");
+            throw NumericalError(
+                "incompressible core (area constraint)", steps_,
+                "no multiplier restores the area within one step: the time step is too large "
+                "for the motion");
         const double lambda = -2 * c / (b + std::copysign(std::sqrt(discriminant), b));
         v_.segment(o, n) += 0.5 * dt * lambda * MG;
     }
@@ -336,7 +339,8 @@ void ShellModel::check_time_step(double dt) const
     std::ostringstream cause;
     cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
           << " s (" << limit / dt_c << " dt_c, dt_c = sqrt(m/k_max) = " << dt_c
-          << " s): the smaller of dt_c and the damped-contact limit (sqrt(gamma^2 + 4 omega^2) - gamma)/omega^2 "
+          << " s): the smaller of dt_c and the damped-contact limit (sqrt(gamma^2 + 4 omega^2) - "
+             "gamma)/omega^2 "
              "of velocity Verlet (decision spd-stability-limit)";
     throw NumericalError("time step", steps_, cause.str());
 }

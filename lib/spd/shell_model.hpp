@@ -29,8 +29,8 @@ struct Shell
     bool closed = true;       // closed ring, or open chain ending on the absent vertex
     bool rigid = false;       // all vertices frozen, moved kinematically (walls, section 4.1)
     ShellLaws laws;
-    double depth = 1;            // out-of-plane length s [m]
-    double radius = 0;           // vertex disk / sphero-segment radius r [m]
+    double depth = 1;  // out-of-plane length s [m]
+    double radius = 0; // vertex disk / sphero-segment radius r [m]
     // Undrained core modulus, eq. (4) [Pa]; 0: no core stiffness; INFINITY: incompressible core, the limit
     // eta -> inf of eq. (24), imposed as the exact constraint A(x) = A0 whose multiplier is the core pressure
     // (ShellModel::step, decision spd-eta-infinity).
@@ -86,8 +86,9 @@ class ShellModel
     // Largest stable time step of the scheme (decision spd-stability-limit): min(dt_c, the limit of the
     // damped normal contact). The contact damping c_n enters with the half-step velocity, so a vertex on a
     // wall is the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v' (omega^2 = k_n/m,
-    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4: h < (sqrt(gamma^2 + 4 omega^2) - gamma)/omega^2,
-    // i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m k_n).
+    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4: h < (sqrt(gamma^2 + 4 omega^2) -
+    // gamma)/omega^2, i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m
+    // k_n).
     double stable_time_step() const;
     // Throws NumericalError (exit 3) naming dt, the limit and dt_c if dt > stable_time_step().
     void check_time_step(double dt) const;
@@ -96,7 +97,8 @@ class ShellModel
     double area(int shell) const;  // polygon area [m^2], CCW positive
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
-    // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure [Pa].
+    // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
+    // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
     double kinetic_energy() const;
     double

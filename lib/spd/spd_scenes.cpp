@@ -286,9 +286,10 @@ std::vector<ParameterSpec> ring_parameters(std::vector<ParameterSpec> extra)
     std::vector<ParameterSpec> ps = {
         ParameterSpec::integer("nodes", 128, "1", "vertices N of the ring").at_least(8),
         ParameterSpec::real("R", 1.0, "m", "initial radius R0").positive(),
-        ParameterSpec::real("eta", 0.0, "1",
-                            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf: incompressible core "
-                            "(exact area constraint, the pressure its multiplier)")
+        ParameterSpec::real(
+            "eta", 0.0, "1",
+            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf: incompressible core "
+            "(exact area constraint, the pressure its multiplier)")
             .non_negative()
             .infinity_allowed(),
         ParameterSpec::real("dt_factor", 0.5, "1", "time step over dt_c = sqrt(m/k_max) (section 2.4)")
