@@ -403,7 +403,9 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
     std::ostringstream cause;
     cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "
           << model.max_free_force() << " N > tolerance " << force_tolerance
-          << " N): damping too weak or too strong for the slowest mode";
+          << " N): damping too weak or too strong for the slowest mode, or dt = "
+          << dt / model.critical_time_step() << " dt_c too close to the stability limit "
+          << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
 }
 
