@@ -173,6 +173,18 @@ void ShellModel::contact_forces(double dt)
                         continue;
                     const SegmentProximity prox = point_segment_proximity(c, A, B);
                     if (prox.distance >= reach) continue;
+                    // The sphero-segment law holds while the vertex centre stays on its side of the element:
+                    // at distance 0 the normal flips and the vertex tunnels through (a wall cannot hold it).
+                    if (prox.distance < 0.05 * reach) {
+                        std::ostringstream cause;
+                        cause << "contact overlap " << reach - prox.distance
+                              << " m above 95% of r_i + r_j = " << reach << " m (vertex " << i
+                              << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
+                              << " N/m can hold before the vertex crosses the element; use more nodes (more "
+                                 "contact "
+                                 "vertices share the load) or a stiffer contact";
+                        throw NumericalError("contact overlap", steps_, cause.str());
+                    }
                     const bool last_end = !sq.closed && k == sq.elements() - 1;
                     if (prox.branch == SegmentBranch::end_b && !last_end)
                         continue; // counted with element k+1

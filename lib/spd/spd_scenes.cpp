@@ -234,6 +234,30 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     for (const CompressionState& st : r.states)
         if (st.loading && st.strain <= 0.5 * last->strain + 1e-9)
             s["Ws_over_Wb_mid"] = st.bending_energy > 0 ? st.stretch_energy / st.bending_energy : 0.0;
+    // Shape of the late force growth (Fig. 25): relative second differences of F and of ln F over the
+    // loading states nearest to 1/2, 3/4 and 1 of the largest strain; 0 for a linear law (F) or an
+    // exponential law (ln F), -0.17 (ln F) for any power law F ~ eps^k over eps = 0.2, 0.3, 0.4.
+    {
+        const auto nearest = [&](double eps) {
+            const CompressionState* best = nullptr;
+            for (const CompressionState& st : r.states)
+                if (st.loading && (!best || std::abs(st.strain - eps) < std::abs(best->strain - eps)))
+                    best = &st;
+            return best;
+        };
+        const CompressionState *a = nearest(0.5 * last->strain), *b = nearest(0.75 * last->strain);
+        const double Fa = a->wall_force, Fb = b->wall_force, Fc = last->wall_force;
+        const bool positive = Fa > 0 && Fb > 0 && Fc > 0 && a != b && b != last;
+        s["force_second_difference"] = or_null(positive ? (Fc - 2 * Fb + Fa) / (Fc - Fa) : NAN);
+        s["log_force_second_difference"] =
+            or_null(positive ? (std::log(Fc) - 2 * std::log(Fb) + std::log(Fa)) / std::log(Fc / Fa) : NAN);
+        if (elastica) {
+            const double Ea = elastica_ring_between_plates(a->strain).force,
+                         Eb = elastica_ring_between_plates(b->strain).force,
+                         Ec = elastica_ring_between_plates(last->strain).force;
+            s["elastica_force_second_difference"] = or_null(positive ? (Ec - 2 * Eb + Ea) / (Ec - Ea) : NAN);
+        }
+    }
     s["eq35_ratio_final"] =
         or_null(last->contact_vertices > 0
                     ? last->wall_force / F_star /
