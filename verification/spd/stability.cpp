@@ -125,3 +125,18 @@ TEST_CASE("a time step above the stability limit stops the run with exit 3 namin
     CAPTURE(output);
     CHECK(output.find("0.828") != std::string::npos); // the limit, in units of dt_c
 }
+
+TEST_CASE("a vertex pressed through a wall stops the run with exit 3 instead of tunnelling [SPD section 2.3, "
+          "eq. (6)]")
+{
+    // Incompressible ring of 24 nodes at eps = 0.35: the wall force (about 1000 F*) on few contact vertices
+    // exceeds k_n r per vertex; the overlap would pass r_i + r_j and the vertex cross the wall. At N = 32 the
+    // same load is shared by more vertices and the run completes.
+    RingSetup setup;
+    setup.nodes = 24;
+    setup.eta = INFINITY;
+    CHECK_THROWS_WITH_AS(ring_compression(setup, 0.35, 0.05, false, 1e-4, [](double) {}),
+                         doctest::Contains("contact overlap"), NumericalError);
+    setup.nodes = 32;
+    CHECK_NOTHROW(ring_compression(setup, 0.35, 0.05, false, 1e-4, [](double) {}));
+}
