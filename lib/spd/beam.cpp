@@ -80,6 +80,7 @@ BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_
     BeamResult r;
     r.critical_time_step = model.critical_time_step();
     r.dt = dt_factor * r.critical_time_step;
+    model.check_time_step(r.dt);
 
     model.set_applied_force(load, Vec2(0.0, -setup.force));
     const long max_steps = static_cast<long>(200.0 * 2 * std::numbers::pi / (omega1 * r.dt)) + 10000;

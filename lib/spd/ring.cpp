@@ -59,6 +59,7 @@ RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure)
     const int ring = add_ring(model, setup, pressure);
     const double A0 = model.area(ring);
     const double dt = setup.dt_factor * model.critical_time_step();
+    model.check_time_step(dt);
     // The uniform load excites only the breathing mode, of radial stiffness per vertex
     // 4 k_s sin^2(pi/N) (eq. (21)) + 2 K_Omega s l0 / R (eq. (4)); damping critical for it.
     const double k_radial = 4 * sc.laws.k_s * std::pow(std::sin(pi / setup.nodes), 2) +
@@ -72,13 +73,12 @@ RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure)
     return r;
 }
 
-CompressionResult ring_compression(const RingSetup& setup, double strain_max, double strain_step, bool unload,
-                                   double relax_tolerance, const std::function<void(double)>& progress)
+RingBetweenWalls ring_between_walls(const RingSetup& setup)
 {
     const RingScales sc = ring_scales(setup);
-    const double R = setup.radius, r = sc.radius_vertex, b0 = 2 * R;
-    ShellModel model;
-    const int ring = add_ring(model, setup, 0.0);
+    const double R = setup.radius, r = sc.radius_vertex;
+    RingBetweenWalls w;
+    w.ring = add_ring(w.model, setup, 0.0);
     // Walls: rigid open shells (reference angle 0), long enough for any contact, radius 0 (their vertex
     // disks are the lines themselves): the ring's sphero-segments touch them at distance r.
     Shell wall;
@@ -87,18 +87,35 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     Points<2> top(2, 2), bottom(2, 2);
     top << -3 * R, 3 * R, R + r, R + r;
     bottom << 3 * R, -3 * R, -R - r, -R - r;
-    const int top_wall = model.add_shell(top, wall, 1.0);
-    const int bottom_wall = model.add_shell(bottom, wall, 1.0);
+    w.top_wall = w.model.add_shell(top, wall, 1.0);
+    w.bottom_wall = w.model.add_shell(bottom, wall, 1.0);
     // Decisions spd-ring-walls and spd-contact-damping: k_n = k_s, frictionless, normal damping critical for
     // a vertex on the wall, 2 sqrt(m k_n).
-    model.set_contact_law({sc.laws.k_s, 0.0, 0.0, 2 * std::sqrt(setup.vertex_mass * sc.laws.k_s)});
+    w.model.set_contact_law({sc.laws.k_s, 0.0, 0.0, 2 * std::sqrt(setup.vertex_mass * sc.laws.k_s)});
+    return w;
+}
+
+double ring_damping(const RingSetup& setup)
+{
+    return 2 * setup.vertex_mass * ovalisation_frequency(setup, ring_scales(setup));
+}
+
+CompressionResult ring_compression(const RingSetup& setup, double strain_max, double strain_step, bool unload,
+                                   double relax_tolerance, const std::function<void(double)>& progress)
+{
+    const RingScales sc = ring_scales(setup);
+    const double R = setup.radius, r = sc.radius_vertex, b0 = 2 * R;
+    RingBetweenWalls walls = ring_between_walls(setup);
+    ShellModel& model = walls.model;
+    const int ring = walls.ring, top_wall = walls.top_wall, bottom_wall = walls.bottom_wall;
     const double A0 = model.area(ring);
 
     CompressionResult result;
     result.dt_critical = model.critical_time_step();
     result.dt = setup.dt_factor * result.dt_critical;
+    model.check_time_step(result.dt); // 0.83 dt_c with the critically damped wall contact
     const double omega2 = ovalisation_frequency(setup, sc);
-    const double damping = 2 * setup.vertex_mass * omega2;
+    const double damping = ring_damping(setup);
     const double force_scale = std::min(sc.flexural_rigidity / (R * R), sc.characteristic.F_2star);
     const double tolerance = relax_tolerance * force_scale;
 

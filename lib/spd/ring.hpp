@@ -37,6 +37,17 @@ RingScales ring_scales(const RingSetup& setup);
 // Adds the ring (CCW, vertex 0 on the x axis) to a model; returns its shell index.
 int add_ring(ShellModel& model, const RingSetup& setup, double pressure_applied);
 
+// The ring between two rigid, frictionless walls touching its shell (section 4.1; decisions spd-ring-walls,
+// spd-contact-damping: k_n = k_s, normal contact damping 2 sqrt(m k_n)), and the global damping 2 m omega_2
+// used to relax it (omega_2 the ovalisation frequency of the free ring).
+struct RingBetweenWalls
+{
+    ShellModel model;
+    int ring = 0, top_wall = 0, bottom_wall = 0;
+};
+RingBetweenWalls ring_between_walls(const RingSetup& setup);
+double ring_damping(const RingSetup& setup);
+
 // Ring under a small internal pressure p, relaxed to equilibrium: the apparent modulus p / (dV/V0).
 struct RingPressureResult
 {

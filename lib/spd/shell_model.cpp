@@ -119,23 +119,32 @@ void ShellModel::internal_forces(const Shell& s)
 
 // SPD eq. (4) and section 2.4: dp = -K_Omega dV/V0 (undrained), plus a constant applied (drained) pressure;
 // each element receives s l p along its outward normal at its midpoint, half to each end (this is
-// p dV/dx_k exactly).
+// p dV/dx_k = p s dA/dx_k exactly). The pressure of an incompressible core is the constraint multiplier,
+// applied by step_constrained; here it only receives the applied pressure.
 void ShellModel::core_forces(int index)
 {
     const Shell& s = shells_[index];
-    const double V = s.depth * area(index);
-    core_p_[index] += -s.K_Omega * (V - core_V_prev_[index]) / core_V0_[index];
-    core_V_prev_[index] = V;
-    const double p = core_p_[index] + s.pressure_applied;
-    if (p == 0.0) return;
-    for (int k = 0; k < s.count; ++k) {
-        const int i = s.first + k, j = next(s, k);
-        const Vec2 e = vertex(j) - vertex(i);
-        const Vec2 outward_times_l(e.y(), -e.x()); // CCW polygon: outward normal times l
-        const Vec2 half = 0.5 * s.depth * p * outward_times_l;
-        add_force(i, half);
-        add_force(j, half);
+    double p = s.pressure_applied;
+    if (!s.incompressible()) {
+        const double V = s.depth * area(index);
+        core_p_[index] += -s.K_Omega * (V - core_V_prev_[index]) / core_V0_[index];
+        core_V_prev_[index] = V;
+        p += core_p_[index];
     }
+    if (p == 0.0) return;
+    f_.segment(2 * s.first, 2 * s.count) +=
+        s.depth * p * area_gradient(s, x_.segment(2 * s.first, 2 * s.count));
+}
+
+Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const
+{
+    Eigen::VectorXd g(2 * s.count);
+    for (int k = 0; k < s.count; ++k) {
+        const int a = (k + s.count - 1) % s.count, b = (k + 1) % s.count;
+        g[2 * k] = 0.5 * (xs[2 * b + 1] - xs[2 * a + 1]);
+        g[2 * k + 1] = -0.5 * (xs[2 * b] - xs[2 * a]);
+    }
+    return g;
 }
 
 // Section 2.3: every vertex of a shell against every element of the other shells (sphero-segments). A
@@ -157,8 +166,25 @@ void ShellModel::contact_forces(double dt)
                 const Vec2 c = vertex(i);
                 for (int k = 0; k < sq.elements(); ++k) {
                     const int a = sq.first + k, b = next(sq, k);
-                    const SegmentProximity prox = point_segment_proximity(c, vertex(a), vertex(b));
+                    const Vec2 A = vertex(a), B = vertex(b);
+                    // Bounding box of the sphero-segment: a cheap rejection before the exact distance.
+                    if (c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
+                        c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach)
+                        continue;
+                    const SegmentProximity prox = point_segment_proximity(c, A, B);
                     if (prox.distance >= reach) continue;
+                    // The sphero-segment law holds while the vertex centre stays on its side of the element:
+                    // at distance 0 the normal flips and the vertex tunnels through (a wall cannot hold it).
+                    if (prox.distance < 0.05 * reach) {
+                        std::ostringstream cause;
+                        cause << "contact overlap " << reach - prox.distance
+                              << " m above 95% of r_i + r_j = " << reach << " m (vertex " << i
+                              << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
+                              << " N/m can hold before the vertex crosses the element; use more nodes (more "
+                                 "contact "
+                                 "vertices share the load) or a stiffer contact";
+                        throw NumericalError("contact overlap", steps_, cause.str());
+                    }
                     const bool last_end = !sq.closed && k == sq.elements() - 1;
                     if (prox.branch == SegmentBranch::end_b && !last_end)
                         continue; // counted with element k+1
@@ -205,21 +231,80 @@ void ShellModel::compute_forces(double dt)
 void ShellModel::step(double dt, double damping)
 {
     if (steps_ == 0) compute_forces(dt);
-    const auto forces = [&](const Eigen::VectorXd&, const Eigen::VectorXd& v, Eigen::VectorXd& f) {
-        compute_forces(dt);
-        f = f_;
-        // Damping acts on free degrees of freedom only (the inverse mass masks the frozen ones).
-        add_viscous_damping(f, v, damping);
-    };
-    Eigen::VectorXd f = f_;
-    add_viscous_damping(f, v_, damping);
-    velocity_verlet_step(x_, v_, f, inverse_mass_, dt, forces);
+    const bool constrained =
+        std::any_of(shells_.begin(), shells_.end(), [](const Shell& s) { return s.incompressible(); });
+    if (constrained) {
+        step_constrained(dt, damping);
+    } else {
+        const auto forces = [&](const Eigen::VectorXd&, const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+            compute_forces(dt);
+            f = f_;
+            // Damping acts on free degrees of freedom only (the inverse mass masks the frozen ones).
+            add_viscous_damping(f, v, damping);
+        };
+        Eigen::VectorXd f = f_;
+        add_viscous_damping(f, v_, damping);
+        velocity_verlet_step(x_, v_, f, inverse_mass_, dt, forces);
+    }
     ++steps_;
     if (!x_.allFinite() || !v_.allFinite()) {
         std::ostringstream cause;
         cause << "time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
               << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
+    }
+}
+
+// RATTLE (H. C. Andersen, J. Comput. Phys. 52 (1983) 24) for incompressible cores, eq. (4) in the limit
+// K_Omega -> inf (eta = inf, eq. (24)): velocity Verlet with the constraint force mu dA/dx on each
+// incompressible shell, mu = s p. Position stage: the polygon area is a quadratic form, so
+// A(y + lambda d) = A(y) + lambda dA/dx(y).d + lambda^2 A(d) with y = x + dt v_half, d = dt^2/2 M^-1
+// dA/dx(x), and A = A0 is solved exactly for lambda (the root of smallest magnitude). Velocity stage: dA/dx .
+// v = 0 at the new positions (linear in mu). f_ keeps the constraint force, so the stored force is the one
+// the shell feels (relaxation criterion) and the next position stage only adds the increment of the
+// multiplier.
+void ShellModel::step_constrained(double dt, double damping)
+{
+    Eigen::VectorXd f = f_;
+    add_viscous_damping(f, v_, damping);
+    v_.array() += 0.5 * dt * inverse_mass_.array() * f.array();
+    for (std::size_t p = 0; p < shells_.size(); ++p) {
+        const Shell& s = shells_[p];
+        if (!s.incompressible()) continue;
+        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
+        const Eigen::VectorXd G = area_gradient(s, x_.segment(o, n));
+        const Eigen::VectorXd MG = inverse_mass_.segment(o, n).cwiseProduct(G);
+        const Eigen::VectorXd y = x_.segment(o, n) + dt * v_.segment(o, n);
+        const Eigen::VectorXd d = 0.5 * dt * dt * MG;
+        const auto area_of = [&](const Eigen::VectorXd& xs) {
+            return polygon_signed_area(Eigen::Map<const Points<2>>(xs.data(), 2, s.count));
+        };
+        const double a = area_of(d), b = area_gradient(s, y).dot(d);
+        const double c = area_of(y) - core_V0_[p] / s.depth;
+        const double discriminant = b * b - 4 * a * c;
+        if (discriminant < 0 || b == 0)
+            throw NumericalError(
+                "incompressible core (area constraint)", steps_,
+                "no multiplier restores the area within one step: the time step is too large "
+                "for the motion");
+        const double lambda = -2 * c / (b + std::copysign(std::sqrt(discriminant), b));
+        v_.segment(o, n) += 0.5 * dt * lambda * MG;
+    }
+    x_ += dt * v_;
+    compute_forces(dt);
+    f = f_;
+    add_viscous_damping(f, v_, damping);
+    v_.array() += 0.5 * dt * inverse_mass_.array() * f.array();
+    for (std::size_t p = 0; p < shells_.size(); ++p) {
+        const Shell& s = shells_[p];
+        if (!s.incompressible()) continue;
+        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
+        const Eigen::VectorXd G = area_gradient(s, x_.segment(o, n));
+        const Eigen::VectorXd MG = inverse_mass_.segment(o, n).cwiseProduct(G);
+        const double mu = -G.dot(v_.segment(o, n)) / (0.5 * dt * G.dot(MG));
+        v_.segment(o, n) += 0.5 * dt * mu * MG;
+        f_.segment(o, n) += mu * G;
+        core_p_[p] = mu / s.depth;
     }
 }
 
@@ -237,19 +322,39 @@ double ShellModel::critical_time_step() const
     for (std::size_t p = 0; p < shells_.size(); ++p) {
         const Shell& s = shells_[p];
         if (s.rigid) continue;
-        double l_min = INFINITY, gradient_sq = 0;
+        double l_min = INFINITY;
         for (int k = 0; k < s.elements(); ++k)
             l_min = std::min(l_min, length_prev_[s.first + k]);
         k_max = std::max({k_max, s.laws.k_s, 4.0 * s.laws.k_b / (l_min * l_min)});
-        if (s.closed && s.K_Omega > 0) {
-            for (int k = 0; k < s.count; ++k) {
-                const Vec2 d = vertex(next(s, k)) - vertex(prev(s, k)); // dA/dx_k = perp(d)/2
-                gradient_sq += 0.25 * d.squaredNorm();
-            }
+        if (s.closed && s.K_Omega > 0 && !s.incompressible()) {
+            const double gradient_sq = area_gradient(s, x_.segment(2 * s.first, 2 * s.count)).squaredNorm();
             k_max = std::max(k_max, s.K_Omega * s.depth * s.depth * gradient_sq / core_V0_[p]);
         }
     }
     return std::sqrt(min_vertex_mass() / k_max);
+}
+
+double ShellModel::stable_time_step() const
+{
+    double limit = critical_time_step();
+    if (contact_.k_n > 0) {
+        const double m = min_vertex_mass(), omega2 = contact_.k_n / m, gamma = contact_.normal_damping / m;
+        limit = std::min(limit, (std::sqrt(gamma * gamma + 4 * omega2) - gamma) / omega2);
+    }
+    return limit;
+}
+
+void ShellModel::check_time_step(double dt) const
+{
+    const double dt_c = critical_time_step(), limit = stable_time_step();
+    if (dt <= limit) return;
+    std::ostringstream cause;
+    cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
+          << " s (" << limit / dt_c << " dt_c, dt_c = sqrt(m/k_max) = " << dt_c
+          << " s): the smaller of dt_c and the damped-contact limit (sqrt(gamma^2 + 4 omega^2) - "
+             "gamma)/omega^2 "
+             "of velocity Verlet (decision spd-stability-limit)";
+    throw NumericalError("time step", steps_, cause.str());
 }
 
 double ShellModel::stretch_energy() const
@@ -310,7 +415,9 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
     std::ostringstream cause;
     cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "
           << model.max_free_force() << " N > tolerance " << force_tolerance
-          << " N): damping too weak or too strong for the slowest mode";
+          << " N): damping too weak or too strong for the slowest mode, or dt = "
+          << dt / model.critical_time_step() << " dt_c too close to the stability limit "
+          << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
 }
 

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <utility>
@@ -28,12 +29,16 @@ struct Shell
     bool closed = true;       // closed ring, or open chain ending on the absent vertex
     bool rigid = false;       // all vertices frozen, moved kinematically (walls, section 4.1)
     ShellLaws laws;
-    double depth = 1;            // out-of-plane length s [m]
-    double radius = 0;           // vertex disk / sphero-segment radius r [m]
-    double K_Omega = 0;          // undrained core modulus, eq. (4) [Pa]; 0: no core stiffness
+    double depth = 1;  // out-of-plane length s [m]
+    double radius = 0; // vertex disk / sphero-segment radius r [m]
+    // Undrained core modulus, eq. (4) [Pa]; 0: no core stiffness; INFINITY: incompressible core, the limit
+    // eta -> inf of eq. (24), imposed as the exact constraint A(x) = A0 whose multiplier is the core pressure
+    // (ShellModel::step, decision spd-eta-infinity).
+    double K_Omega = 0;
     double pressure_applied = 0; // constant (drained) pressure acting inside the shell [Pa]
     int elements() const { return closed ? count : count - 1; }
     bool has_hinge(int local) const { return closed || (local > 0 && local < count - 1); }
+    bool incompressible() const { return closed && std::isinf(K_Omega); }
 };
 
 // Contact law between shells: normal eq. (6), incremental Coulomb friction eq. (7) when mu > 0 (the scenes of
@@ -67,8 +72,9 @@ class ShellModel
     // displacement increments of eq. (7). Called once per time step by step().
     void compute_forces(double dt);
 
-    // One velocity-Verlet step (section 2.4) with viscous damping c v [N s/m] on the free vertices.
-    // Throws NumericalError (exit 3) on a non-finite state, naming dt/dt_c.
+    // One velocity-Verlet step (section 2.4) with viscous damping c v [N s/m] on the free vertices; with an
+    // incompressible core, its RATTLE form (step_constrained). Throws NumericalError (exit 3) on a non-finite
+    // state, naming dt/dt_c.
     void step(double dt, double damping);
 
     // SPD section 2.4: dt_c = sqrt(m / k_max), with k_max the largest of k_s, the bending stiffness
@@ -77,11 +83,23 @@ class ShellModel
     // spd-dtc-kmax).
     double critical_time_step() const;
 
+    // Largest stable time step of the scheme (decision spd-stability-limit): min(dt_c, the limit of the
+    // damped normal contact). The contact damping c_n enters with the half-step velocity, so a vertex on a
+    // wall is the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v' (omega^2 = k_n/m,
+    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4: h < (sqrt(gamma^2 + 4 omega^2) -
+    // gamma)/omega^2, i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m
+    // k_n).
+    double stable_time_step() const;
+    // Throws NumericalError (exit 3) naming dt, the limit and dt_c if dt > stable_time_step().
+    void check_time_step(double dt) const;
+
     // Measures.
     double area(int shell) const;  // polygon area [m^2], CCW positive
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
-    double core_pressure(int shell) const { return core_p_[shell]; } // from eq. (4), excluding applied [Pa]
+    // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
+    // [Pa].
+    double core_pressure(int shell) const { return core_p_[shell]; }
     double kinetic_energy() const;
     double
     max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
@@ -109,6 +127,10 @@ class ShellModel
     int prev(const Shell& s, int local) const { return s.first + (local + s.count - 1) % s.count; }
     void internal_forces(const Shell& s);
     void core_forces(int index);
+    void step_constrained(double dt, double damping);
+    // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
+    // are xs (2 count entries): outward for a CCW polygon [m].
+    Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
     void contact_forces(double dt);
     void add_force(int i, const Vec2& F)
     {

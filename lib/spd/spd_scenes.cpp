@@ -79,8 +79,7 @@ RingSetup ring_setup(const Parameters& p)
     r.nodes = static_cast<int>(p.integer("nodes"));
     r.radius = p.real("R");
     r.material = material_of(p);
-    const double eta = p.real("eta");
-    r.eta = std::isinf(eta) ? 1e5 : eta; // decision spd-eta-infinity
+    r.eta = p.real("eta"); // inf: incompressible core, exact area constraint (decision spd-eta-infinity)
     r.dt_factor = p.real("dt_factor");
     return r;
 }
@@ -88,6 +87,9 @@ RingSetup ring_setup(const Parameters& p)
 void run_ring_pressure(const Parameters& p, RunContext& ctx)
 {
     RingSetup setup = ring_setup(p);
+    if (std::isinf(setup.eta))
+        throw InputError("eta = inf: an incompressible core has no volume change under pressure, so K_e is "
+                         "infinite; allowed: a finite eta >= 0");
     const double pressure = p.real("pressure");
     const RingScales sc = ring_scales(setup);
     RingSetup shell_only = setup;
@@ -232,6 +234,30 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     for (const CompressionState& st : r.states)
         if (st.loading && st.strain <= 0.5 * last->strain + 1e-9)
             s["Ws_over_Wb_mid"] = st.bending_energy > 0 ? st.stretch_energy / st.bending_energy : 0.0;
+    // Shape of the late force growth (Fig. 25): relative second differences of F and of ln F over the
+    // loading states nearest to 1/2, 3/4 and 1 of the largest strain; 0 for a linear law (F) or an
+    // exponential law (ln F), -0.17 (ln F) for any power law F ~ eps^k over eps = 0.2, 0.3, 0.4.
+    {
+        const auto nearest = [&](double eps) {
+            const CompressionState* best = nullptr;
+            for (const CompressionState& st : r.states)
+                if (st.loading && (!best || std::abs(st.strain - eps) < std::abs(best->strain - eps)))
+                    best = &st;
+            return best;
+        };
+        const CompressionState *a = nearest(0.5 * last->strain), *b = nearest(0.75 * last->strain);
+        const double Fa = a->wall_force, Fb = b->wall_force, Fc = last->wall_force;
+        const bool positive = Fa > 0 && Fb > 0 && Fc > 0 && a != b && b != last;
+        s["force_second_difference"] = or_null(positive ? (Fc - 2 * Fb + Fa) / (Fc - Fa) : NAN);
+        s["log_force_second_difference"] =
+            or_null(positive ? (std::log(Fc) - 2 * std::log(Fb) + std::log(Fa)) / std::log(Fc / Fa) : NAN);
+        if (elastica) {
+            const double Ea = elastica_ring_between_plates(a->strain).force,
+                         Eb = elastica_ring_between_plates(b->strain).force,
+                         Ec = elastica_ring_between_plates(last->strain).force;
+            s["elastica_force_second_difference"] = or_null(positive ? (Ec - 2 * Eb + Ea) / (Ec - Ea) : NAN);
+        }
+    }
     s["eq35_ratio_final"] =
         or_null(last->contact_vertices > 0
                     ? last->wall_force / F_star /
@@ -282,10 +308,16 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
 std::vector<ParameterSpec> ring_parameters(std::vector<ParameterSpec> extra)
 {
     std::vector<ParameterSpec> ps = {
-        ParameterSpec::integer("nodes", 128, "1", "vertices N of the ring").at_least(8),
+        ParameterSpec::integer(
+            "nodes", 128, "1",
+            "vertices N of the ring; 128 keeps F, a/b0 and V/V0 within 1% of the elastica up to "
+            "eps = 0.5 (spd-work-precision)")
+            .at_least(8),
         ParameterSpec::real("R", 1.0, "m", "initial radius R0").positive(),
-        ParameterSpec::real("eta", 0.0, "1",
-                            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf = 1e5")
+        ParameterSpec::real(
+            "eta", 0.0, "1",
+            "core-to-shell stiffness ratio K_Omega/K_shell, eq. (24); inf: incompressible core "
+            "(exact area constraint, the pressure its multiplier)")
             .non_negative()
             .infinity_allowed(),
         ParameterSpec::real("dt_factor", 0.5, "1", "time step over dt_c = sqrt(m/k_max) (section 2.4)")
@@ -306,10 +338,14 @@ void register_spd_scenes(SceneRegistry& registry)
         ParameterSpec::choice(
             "support", "cantilever", {"cantilever", "simple"},
             "cantilever (clamped at x = 0, force at the tip) or simply supported (force at the centre)"),
-        ParameterSpec::integer("nodes", 21, "1", "nodes N along the beam (odd for simple support)")
+        ParameterSpec::integer(
+            "nodes", 153, "1",
+            "nodes N along the beam (odd for simple support); 153 is the smallest giving both "
+            "supports 1% accuracy against beam theory (spd-beam-work-precision)")
             .at_least(3),
         ParameterSpec::real("length", 1.0, "m", "beam length L").positive(),
-        ParameterSpec::real("force", 1e-2, "N", "point force F (small: linear theory)").positive(),
+        ParameterSpec::real("force", 1e-3, "N", "point force F (small: linear theory, delta_max < 0.01 L)")
+            .positive(),
         ParameterSpec::real("dt_factor", 0.5, "1", "time step over dt_c = sqrt(m/k_max) (section 2.4)")
             .positive(),
     };

@@ -13,5 +13,6 @@ set xrange [-1.5:1.5]
 set yrange [-1.5:1.5]
 set key top right
 plot word(rundirs, 1).'/shapes.dat' using (column("eps") == -1 ? column("x_over_R") : NaN):"y_over_R" with filledcurves closed fs transparent solid 0.3 lc rgb '#1f77b4' title "elastic, released", \
-     word(rundirs, 2).'/shapes.dat' using (column("eps") == -1 ? column("x_over_R") : NaN):"y_over_R" with filledcurves closed fs transparent solid 0.3 lc rgb '#d62728' title "plastic, released"
+     word(rundirs, 2).'/shapes.dat' using (column("eps") == -1 ? column("x_over_R") : NaN):"y_over_R" with filledcurves closed fs transparent solid 0.3 lc rgb '#d62728' title "plastic, released", \
+     for [k = 1:2] word(rundirs, k).'/shapes.dat' using (column("eps") == -1 ? column("x_over_R") : NaN):"y_over_R" with lines lw 2 lc rgb '#222222' notitle
 unset multiplot
