@@ -35,11 +35,10 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
         throw InputError("C = " + std::to_string(o.C) + " with overlap = " + std::to_string(o.overlap) +
                          ": the groove vertex would touch only one vertex; need C sin(pi/N) < 1 - overlap");
     const double a0 = 0.5 * n * R * R * std::sin(2 * pi / n); // area of the regular N-gon
-    const double a_min = minimum_shape_parameter(n);
-    const double A0 = o.A0 == 0 ? a_min : o.A0;
-    if (A0 < a_min)
-        throw InputError("A0 = " + std::to_string(o.A0) +
-                         ": must be 0 (A_min) or >= A_min(N) = " + std::to_string(a_min));
+    const double A0 = o.A0;
+    if (A0 < minimum_shape_parameter(n)) // no N-gon has a smaller shape parameter
+        throw InputError("A0 = " + std::to_string(A0) +
+                         " is below A_min(N) = " + std::to_string(minimum_shape_parameter(n)));
 
     ShapeParameters shape;
     shape.ka = o.ka * sigma * sigma / (a0 * a0);

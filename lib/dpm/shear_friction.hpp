@@ -25,7 +25,7 @@ struct ShearTestOptions
     InteractionKind interaction = InteractionKind::rough;
     int nodes = 8;
     double C = 1.3;                     // R / sigma
-    double A0 = 0;                      // preferred shape parameter; 0 = A_min(nodes)
+    double A0 = 1.05479;                // preferred shape parameter, >= A_min(nodes) (1.05479 for N = 8)
     double kl = 100;                    // k_l / k_c
     double kb = 171;                    // k_b / (k_c sigma^2)
     double ka = 14;                     // k_a a0^2 / (k_c sigma^2)

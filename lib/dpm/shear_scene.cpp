@@ -2,6 +2,7 @@
 #include "dpm/shear_scene.hpp"
 
 #include "core/output.hpp"
+#include "dpm/preferred_shape.hpp"
 #include "dpm/shear_friction.hpp"
 
 namespace softgrain::dpm {
@@ -12,7 +13,7 @@ void run_shear_friction(const Parameters& p, RunContext& context)
     o.interaction = interaction_from_name(p.choice("interaction"));
     o.nodes = static_cast<int>(p.integer("nodes"));
     o.C = p.real("C");
-    o.A0 = p.real("A0");
+    o.A0 = preferred_shape_parameter(p, "A0", o.nodes);
     o.kl = p.real("kl");
     o.kb = p.real("kb");
     o.ka = p.real("ka");
@@ -61,8 +62,8 @@ std::vector<ParameterSpec> shear_friction_parameters()
             .at_least(4),
         ParameterSpec::real("C", 1.3, "1", "C = R/sigma, polygon circumradius over vertex diameter")
             .positive(),
-        ParameterSpec::real("A0", 0.0, "1", "preferred shape parameter; 0 selects A_min = N tan(pi/N)/pi")
-            .non_negative(),
+        preferred_shape_parameter_spec(1.0, true,
+                                       "preferred shape parameter (N l0)^2/(4 pi a0); min = N tan(pi/N)/pi"),
         ParameterSpec::real("kl", 100.0, "k_c", "edge stiffness k_l/k_c (stiff shells 100, floppy 1)")
             .positive(),
         ParameterSpec::real("kb", 171.0, "k_c sigma^2", "bending stiffness k_b/(k_c sigma^2); 0 = floppy")
