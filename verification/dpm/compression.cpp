@@ -3,6 +3,7 @@
 // small compression (exponent 1), and its compliance is that of a thin elastic ring under diametral point
 // loads: delta/F = (pi/4 - 2/pi) R^3/(EI) + (4/pi - pi/4) R/(EA) (Roark, ring under diametral load with
 // hoop-extension correction alpha = I/(A R^2)), with EI = k_b l0 and EA = k_l l0 for the discrete shell.
+#include "dpm/box_compress.hpp"
 #include "dpm/compress.hpp"
 #include "support/tolerance.hpp"
 
@@ -76,4 +77,27 @@ TEST_CASE("eq. (9.14): local exponent of the cylinder law is 1 + 1/ln(pi/(D~^3 F
         }
     // The prefactor: at L = 0 (F~ = pi/D~^3) delta~ = 4 F~ D~/pi = 4/D~^2.
     CHECK_CLOSE(cylinder_compression(std::numbers::pi, 1.0), 4.0, (Tolerance{1e-14, 0}));
+}
+
+TEST_CASE(
+    "wall repulsion k/2 (sigma/2 - gap)^2: force = -gradient on both axes and both faces [DPM sec. 9.3.4]")
+{
+    // The plate law of section 9.3.4 applied to the four walls of dpm.compress_box (Fig. 9.4). Its AutoDiff
+    // gradient against the analytic force k (sigma/2 - gap) along the wall normal: exact to round-off.
+    const double k = 4, half = 0.5;
+    for (const int axis : {0, 1})
+        for (const double facing : {1.0, -1.0}) {
+            const WallEnergy wall{k, half, 2.0, facing, axis};
+            Eigen::Vector2d r(2.0, 2.0);
+            r(axis) += facing * 0.3; // gap 0.3 < sigma/2
+            const auto d = local_gradient<2>(wall, Eigen::Matrix<double, 2, 1>(r));
+            CHECK_CLOSE(d.value, 0.5 * k * 0.2 * 0.2, (Tolerance{1e-14, 0}));
+            CHECK_CLOSE(-d.gradient(axis), facing * k * 0.2, (Tolerance{1e-14, 0}));
+            CHECK(d.gradient(1 - axis) == 0.0);
+        }
+    // The compression plates are the same law: PlateEnergy on y equals WallEnergy with axis 1.
+    const Eigen::Vector2d r(0.7, 0.35);
+    CHECK_CLOSE(local_value<2>(PlateEnergy{4, 0.5, 0.0, 1.0}, Eigen::Matrix<double, 2, 1>(r)),
+                local_value<2>(WallEnergy{4, 0.5, 0.0, 1.0, 1}, Eigen::Matrix<double, 2, 1>(r)),
+                (Tolerance{1e-15, 0}));
 }
