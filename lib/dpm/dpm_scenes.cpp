@@ -1,6 +1,7 @@
 // Registration of the dpm.* scenes; each scene lives in its own file.
 #include "dpm/dpm_scenes.hpp"
 
+#include "dpm/boundary_jam_scene.hpp"
 #include "dpm/box_compress_scene.hpp"
 #include "dpm/compress_scene.hpp"
 #include "dpm/jam_scene.hpp"
@@ -40,6 +41,10 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
                        "box with repulsive walls: snapshots, overlaps, facets",
                        dpm::compress_box_parameters(), dpm::run_compress_box});
+    registry.add(Scene{"dpm.boundary_jam",
+                       "DPM Fig. 9.18(a-e): jammed packings of 4 disks inside a floppy deformable boundary, "
+                       "distinct packings by contacts and parallelogram angle",
+                       dpm::boundary_jam_parameters(), dpm::run_boundary_jam});
 }
 
 } // namespace softgrain
