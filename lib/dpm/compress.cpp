@@ -2,8 +2,10 @@
 
 #include "core/errors.hpp"
 #include "dpm/modes.hpp"
+#include "dpm/spring_network.hpp"
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
 
@@ -11,17 +13,20 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Shape energy of the particle plus the plates' repulsion, with gradient (FIRE needs no Hessian).
+// Energy of the body alone, adding its gradient when asked.
+using BodyEnergy = std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*)>;
+
+// Body energy plus the plates' repulsion, with gradient (FIRE needs no Hessian).
 struct BetweenPlates
 {
-    const DpmSystem& system;
+    const BodyEnergy& body;
     double kp, half_sigma, top;
     double energy(const Eigen::VectorXd& x, Eigen::VectorXd* gradient, double* top_force) const
     {
-        double u = total_energy(system, x, gradient, nullptr);
+        double u = body(x, gradient);
         if (top_force) *top_force = 0;
-        for (int v = 0; v < system.vertex_count(); ++v) {
-            const std::array<int, 1> point{v};
+        for (Eigen::Index v = 0; v < x.size() / 2; ++v) {
+            const std::array<int, 1> point{static_cast<int>(v)};
             const double y = x(2 * v + 1);
             if (y < half_sigma) // Theta(sigma/2 - r), bottom plate at y = 0
                 u += add_local_term<2, 1>(PlateEnergy{kp, half_sigma, 0.0, 1.0}, point,
@@ -35,6 +40,49 @@ struct BetweenPlates
         return u;
     }
 };
+
+// The protocol: the body (points of diameter sigma) rests on the bottom plate (lowest point at y = sigma/2);
+// the top plate starts touching its highest point and moves down by delta D, log-spaced from delta_min to
+// delta_max; FIRE after each step with dt_max = 0.5/sqrt(lambda_max) (lambda_max: stiffest mode of the body
+// or the plate spring k_p, unit masses).
+CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& body, double sigma,
+                                          double lambda_max, const CompressionOptions& o)
+{
+    const auto ys = x.reshaped(2, x.size() / 2).row(1);
+    const double lift = 0.5 * sigma - ys.minCoeff();
+    for (Eigen::Index v = 0; v < x.size() / 2; ++v)
+        x(2 * v + 1) += lift;
+    CompressionResult out;
+    const double h0 = ys.maxCoeff() + 0.5 * sigma;
+    out.diameter = h0;
+    FireOptions fire;
+    fire.dt_max = 0.5 / std::sqrt(std::max(o.kp, lambda_max));
+    fire.dt_initial = 0.25 * fire.dt_max;
+    fire.force_tolerance = 1e-12;
+    fire.max_iterations = 5'000'000;
+    for (int s = 0; s < o.steps; ++s) {
+        const double delta = o.delta_min * std::pow(o.delta_max / o.delta_min, double(s) / (o.steps - 1));
+        const BetweenPlates plates{body, o.kp, 0.5 * sigma, h0 - delta * out.diameter};
+        const FireResult r = fire_minimise(
+            x,
+            [&plates](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+                f.setZero(y.size());
+                const double u = plates.energy(y, &f, nullptr);
+                f = -f;
+                return u;
+            },
+            fire);
+        out.iterations += r.iterations;
+        if (!r.converged)
+            throw NumericalError("FIRE relaxation between the plates (force rms " +
+                                     std::to_string(r.force_rms) + ")",
+                                 s, "step too large for the body's stiffness");
+        double force = 0;
+        plates.energy(x, nullptr, &force);
+        out.samples.push_back({delta, force, r.iterations});
+    }
+    return out;
+}
 
 } // namespace
 
@@ -50,38 +98,32 @@ CompressionResult compress_shell(const CompressionOptions& o)
     k.kb = o.kb * sigma * sigma;
     DpmSystem system;
     Eigen::VectorXd x;
-    system.add_particle(regular_polygon(n, R, Eigen::Vector2d(0, R + 0.5 * sigma), 0.0), sigma,
+    system.add_particle(regular_polygon(n, R, Eigen::Vector2d(0, 0), 0.0), sigma,
                         table_9_1_parameters(ShapeModel::shell, n, a0, minimum_shape_parameter(n), k), x);
-    CompressionResult out;
-    out.diameter = 2 * R + sigma;
-    const double h0 = out.diameter;
+    const BodyEnergy body = [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
+        return total_energy(system, y, gradient, nullptr);
+    };
+    return compress_between_plates(x, body, sigma, vibrational_modes(system, x).eigenvalues.maxCoeff(), o);
+}
 
-    FireOptions fire;
-    fire.dt_max = 0.5 / std::sqrt(std::max(o.kp, vibrational_modes(system, x).eigenvalues.maxCoeff()));
-    fire.dt_initial = 0.25 * fire.dt_max;
-    fire.force_tolerance = 1e-12;
-    for (int s = 0; s < o.steps; ++s) {
-        const double delta = o.delta_min * std::pow(o.delta_max / o.delta_min, double(s) / (o.steps - 1));
-        const BetweenPlates plates{system, o.kp, 0.5 * sigma, h0 - delta * out.diameter};
-        const FireResult r = fire_minimise(
-            x,
-            [&plates](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
-                f.setZero(y.size());
-                const double u = plates.energy(y, &f, nullptr);
-                f = -f;
-                return u;
-            },
-            fire);
-        out.iterations += r.iterations;
-        if (!r.converged)
-            throw NumericalError("FIRE relaxation between the plates (force rms " +
-                                     std::to_string(r.force_rms) + ")",
-                                 s, "step too large for the shell stiffness");
-        double force = 0;
-        plates.energy(x, nullptr, &force);
-        out.samples.push_back({delta, force, r.iterations});
-    }
+CompressionResult compress_spring_network(const CompressionOptions& o)
+{
+    const SpringNetwork network =
+        disordered_triangular_disk(o.network_nodes, o.network_jitter, o.network_k, o.seed);
+    const BodyEnergy body = [&network](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
+        return spring_network_energy(network, y, gradient);
+    };
+    // A node joins at most 6 springs k (lengths ~ 1): lambda_max <= 4 * 6 k / 2 = 12 k (Gershgorin, unit
+    // masses).
+    CompressionResult out = compress_between_plates(network.x, body, 1.0, 12 * o.network_k, o);
+    out.springs = static_cast<int>(network.springs.size());
     return out;
+}
+
+double cylinder_compression(double force_tilde, double d_tilde)
+{
+    const double pi = std::numbers::pi;
+    return 4 * force_tilde * d_tilde / pi * (1 + std::log(pi / (d_tilde * d_tilde * d_tilde * force_tilde)));
 }
 
 } // namespace softgrain::dpm

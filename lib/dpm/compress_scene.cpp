@@ -1,15 +1,35 @@
-// dpm.compress2d: a 2D elastic shell squeezed between two plates (section 9.3.4, Fig. 9.10): F_a against
-// delta/D and its small-strain exponent.
+// dpm.compress2d: a 2D elastic shell or spring-network disk squeezed between two plates (section 9.3.4,
+// Fig. 9.10): F~ against delta~ = delta/D, eq. (9.14) for the cylinder at the same forces, small-strain
+// exponents.
 #include "dpm/compress_scene.hpp"
 
 #include "core/output.hpp"
 #include "dpm/compress.hpp"
+#include "dpm/spring_network.hpp"
 
 #include <gsl/gsl_fit.h>
 
 #include <cmath>
 
 namespace softgrain::dpm {
+
+namespace {
+
+// Slope of ln y against ln x (GSL least squares); null with fewer than 3 points.
+nlohmann::json log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
+{
+    if (x.size() < 3) return nullptr;
+    std::vector<double> lx, ly;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        lx.push_back(std::log(x[k]));
+        ly.push_back(std::log(y[k]));
+    }
+    double c0, c1, c00, c01, c11, sumsq;
+    gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+    return c1;
+}
+
+} // namespace
 
 void run_compress2d(const Parameters& p, RunContext& context)
 {
@@ -18,47 +38,78 @@ void run_compress2d(const Parameters& p, RunContext& context)
     o.kl = p.real("kl");
     o.kb = p.real("kb");
     o.ka = p.real("ka");
+    o.network_nodes = static_cast<int>(p.integer("network_nodes"));
+    o.network_jitter = p.real("jitter");
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     o.steps = static_cast<int>(p.integer("steps"));
+    o.delta_min = p.real("delta_min");
     o.delta_max = p.real("delta_max");
-    const CompressionResult r = compress_shell(o);
+    const bool network = p.choice("model") == "spring_network";
+    if (network) context.record_seed(o.seed);
+    const CompressionResult r = network ? compress_spring_network(o) : compress_shell(o);
     context.count_steps(r.iterations);
-    auto& table =
-        context.table("force.dat", {{"delta", "D", "compression delta / D"},
-                                    {"F", "k_c sigma", "force F_a on the top plate"},
-                                    {"F_over_D", "k_c", "F_a / D (the shell has no E, nu for F~)"}});
-    std::vector<double> log_delta, log_force;
+    // Moduli for F~ (decision dpm-compress-moduli): the ordered triangular lattice for the network; for the
+    // shell, E = k_l (stretching modulus k_l l0 over a wall thickness sigma = l0) and nu = 0.
+    const double E = network ? triangular_lattice_young_modulus(o.network_k) : o.kl;
+    const double nu = network ? triangular_lattice_poisson_ratio : 0.0;
+    const double d_tilde = p.real("D_tilde");
+
+    auto& table = context.table(
+        "force.dat",
+        {{"delta", "D", "compression delta / D"},
+         {"F", "k_c sigma", "force F_a on the top plate"},
+         {"F_over_D", "k_c", "F_a / D"},
+         {"F_tilde", "1", "F~ = F_a (1 - nu^2)/(E D D~) (2D: force per length over E D, times 1/D~)"},
+         {"delta_eq_9_14", "1", "delta~ of eq. (9.14) for the cylinder at this F~ and D~"}});
+    std::vector<double> fit_delta, fit_force, fit_delta_cylinder;
     for (const CompressionSample& s : r.samples) {
-        table.row({s.delta_over_d, s.force, s.force / r.diameter});
+        const double f_tilde = s.force * (1 - nu * nu) / (E * r.diameter * d_tilde);
+        const double cylinder = s.force > 0 ? cylinder_compression(f_tilde, d_tilde) : 0.0;
+        table.row({s.delta_over_d, s.force, s.force / r.diameter, f_tilde, cylinder});
         if (s.delta_over_d <= p.real("fit_max") && s.force > 0) {
-            log_delta.push_back(std::log(s.delta_over_d));
-            log_force.push_back(std::log(s.force));
+            fit_delta.push_back(s.delta_over_d);
+            fit_force.push_back(s.force);
+            fit_delta_cylinder.push_back(cylinder);
         }
     }
     auto& s = context.summary();
     s["diameter"] = r.diameter;
-    if (log_delta.size() >= 3) {
-        double c0, c1, c00, c01, c11, sumsq;
-        gsl_fit_linear(log_delta.data(), 1, log_force.data(), 1, log_delta.size(), &c0, &c1, &c00, &c01, &c11,
-                       &sumsq);
-        s["small_strain_exponent"] = c1;
-    } else {
-        s["small_strain_exponent"] = nullptr;
+    s["E"] = E;
+    s["nu"] = nu;
+    s["small_strain_exponent"] = log_log_slope(fit_delta, fit_force);
+    // The exponent of eq. (9.14) over the same forces: its local slope 1 + 1/(1 + ln(pi/(D~^3 F~))) > 1.
+    s["eq_9_14_exponent"] = log_log_slope(fit_delta_cylinder, fit_force);
+    if (network) {
+        s["network_nodes"] = o.network_nodes;
+        s["network_springs"] = r.springs;
+        s["coordination"] = 2.0 * r.springs / o.network_nodes;
     }
 }
 
 std::vector<ParameterSpec> compress2d_parameters()
 {
     return {
-        ParameterSpec::choice("model", "shell", {"shell"},
-                              "elastic shell of Fig. 9.10(b) (the spring-network disk is not implemented)"),
-        ParameterSpec::integer("nodes", 100, "1", "vertices N_mu of the shell (paper: 100)").at_least(8),
-        ParameterSpec::real("kl", 1.0, "k_c", "edge stiffness k_l/k_c").positive(),
-        ParameterSpec::real("kb", 1.0, "k_c sigma^2", "bending stiffness k_b/(k_c sigma^2)").positive(),
-        ParameterSpec::real("ka", 1.0, "k_c sigma^2/a0^2", "area stiffness k_a a0^2/(k_c sigma^2)")
+        ParameterSpec::choice("model", "shell", {"shell", "spring_network"},
+                              "elastic shell (Fig. 9.10b) or spring-network disk (Fig. 9.10a)"),
+        ParameterSpec::integer("nodes", 100, "1", "shell: vertices N_mu (paper: 100)").at_least(8),
+        ParameterSpec::real("kl", 1.0, "k_c", "shell: edge stiffness k_l/k_c").positive(),
+        ParameterSpec::real("kb", 1.0, "k_c sigma^2", "shell: bending stiffness k_b/(k_c sigma^2)")
             .positive(),
-        ParameterSpec::integer("steps", 30, "1", "compression steps, log-spaced from 1e-4 D").at_least(3),
+        ParameterSpec::real("ka", 1.0, "k_c sigma^2/a0^2", "shell: area stiffness k_a a0^2/(k_c sigma^2)")
+            .positive(),
+        ParameterSpec::integer("network_nodes", 1100, "1", "network: nodes (paper: 1100, 3197 springs)")
+            .at_least(7),
+        ParameterSpec::real("jitter", 0.2, "lattice spacing",
+                            "network: random node displacement (disorder) of the triangular lattice")
+            .non_negative()
+            .below(0.5),
+        ParameterSpec::integer("seed", 1, "1", "network: seed of the node displacements").non_negative(),
+        ParameterSpec::integer("steps", 30, "1", "compression steps, log-spaced").at_least(3),
+        ParameterSpec::real("delta_min", 1e-4, "D", "smallest compression delta/D").positive(),
         ParameterSpec::real("delta_max", 0.2, "D", "largest compression delta/D").positive().below(1.0),
-        ParameterSpec::real("fit_max", 1e-2, "D", "small-strain exponent fitted for delta/D up to this")
+        ParameterSpec::real("fit_max", 1e-2, "D", "small-strain exponents fitted for delta/D up to this")
+            .positive(),
+        ParameterSpec::real("D_tilde", 1.0, "1", "D~ = D/l, cylinder diameter over length in eq. (9.14)")
             .positive(),
     };
 }

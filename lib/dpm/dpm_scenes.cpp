@@ -1,6 +1,8 @@
 // Registration of the dpm.* scenes; each scene lives in its own file.
 #include "dpm/dpm_scenes.hpp"
 
+#include "dpm/boundary_jam_scene.hpp"
+#include "dpm/box_compress_scene.hpp"
 #include "dpm/compress_scene.hpp"
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
@@ -35,6 +37,14 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.3.4: an elastic shell compressed between two plates, F_a against delta/D and "
               "its small-strain exponent (Fig. 9.10)",
               dpm::compress2d_parameters(), dpm::run_compress2d});
+    registry.add(Scene{"dpm.compress_box",
+                       "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
+                       "box with repulsive walls: snapshots, overlaps, facets",
+                       dpm::compress_box_parameters(), dpm::run_compress_box});
+    registry.add(Scene{"dpm.boundary_jam",
+                       "DPM Fig. 9.18(a-e): jammed packings of 4 disks inside a floppy deformable boundary, "
+                       "distinct packings by contacts and parallelogram angle",
+                       dpm::boundary_jam_parameters(), dpm::run_boundary_jam});
 }
 
 } // namespace softgrain

@@ -6,6 +6,7 @@
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/modes.hpp"
+#include "dpm/preferred_shape.hpp"
 #include "dpm/single_particle.hpp"
 
 #include <algorithm>
@@ -121,11 +122,7 @@ void run_modes(const Parameters& p, RunContext& context)
     const int n = static_cast<int>(p.integer("nodes"));
     const ShapeModel model = shape_model_from_name(p.choice("model"));
     const double a_min = minimum_shape_parameter(n);
-    const double A0 = p.real("A0") == 0 ? a_min : p.real("A0");
-    if (A0 < a_min)
-        throw InputError(
-            "A0 = " + std::to_string(A0) +
-            ": must be 0 (A_min) or >= A_min(nodes) = N tan(pi/N)/pi = " + std::to_string(a_min));
+    const double A0 = preferred_shape_parameter(p, "A0", n);
     const double a0 = 1.0; // unit of area; k_a = 1 sets the energy unit k_a a0^2
     ShapeStiffness k;
     k.ka = 1.0;
@@ -165,10 +162,9 @@ std::vector<ParameterSpec> modes_parameters()
             .at_least(1),
         ParameterSpec::real("pressure", 1e-7, "k_a a0", "packings: pressure of the analysed packing")
             .positive(),
-        ParameterSpec::real(
-            "A0", 1.04, "1",
-            "preferred shape parameter A0 = (N l0)^2/(4 pi a0); 0 selects A_min = N tan(pi/N)/pi")
-            .non_negative(),
+        preferred_shape_parameter_spec(1.04, false,
+                                       "single particle: preferred shape parameter A0 = (N l0)^2/(4 pi a0); "
+                                       "min = N tan(pi/N)/pi"),
         ParameterSpec::real("kl", 1.0, "k_a a0", "edge stiffness k_l (floppy, shell)").positive(),
         ParameterSpec::real("kb", 1.0, "k_a a0^2", "bending stiffness k_b (shell)").positive(),
         ParameterSpec::real("gamma", 0.1, "k_a a0^(3/2)", "line tension gamma (surface_tension)").positive(),

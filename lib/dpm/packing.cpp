@@ -20,7 +20,7 @@ Packing jam_packing(const PackingOptions& o)
     k.kl = o.kl;
     k.kb = o.kb * sigma * sigma;
     const ShapeParameters shape =
-        table_9_1_parameters(o.model, n, a0, o.A0 == 0 ? minimum_shape_parameter(n) : o.A0, k);
+        table_9_1_parameters(o.model, n, a0, o.A0.value_or(minimum_shape_parameter(n)), k);
 
     Packing out;
     DpmSystem& s = out.system;

@@ -17,7 +17,7 @@ struct PackingOptions
     double C = 0.726; // R/sigma (sigma = 1, k_c = 1)
     InteractionKind interaction = InteractionKind::rough;
     ShapeModel model = ShapeModel::shell;
-    double A0 = 0;                     // 0 = A_min
+    std::optional<double> A0;          // preferred shape parameter; absent: A_min(N)
     double kl = 2, kb = 0.3, ka = 0.9; // k_l/k_c, k_b/(k_c sigma^2), k_a a0^2/(k_c sigma^2) (Fig. 9.12)
     double phi_start = 0.1;            // area of the polygons / L^2 at placement
     double energy_onset = 1e-10;       // U_t per particle [k_c sigma^2]

@@ -25,6 +25,18 @@ Eigen::Vector2d centre_of_mass(const Eigen::VectorXd& x, const Particle& p)
 
 } // namespace
 
+ContactForce contact_force_on_mu(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    const Particle &beta = system.particles[0], &mu = system.particles[1];
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    const double energy = total_energy(system, x, &g, nullptr, interaction_part);
+    const Eigen::Vector2d force =
+        -g.segment(2 * mu.first, 2 * mu.count).reshaped(2, mu.count).rowwise().sum();
+    const Eigen::Vector2d normal = (centre_of_mass(x, mu) - centre_of_mass(x, beta)).normalized();
+    const Eigen::Vector2d tangent(-normal.y(), normal.x()); // n x t = z
+    return {force.dot(normal), force.dot(tangent), energy};
+}
+
 ShearTestResult simple_shear_test(const ShearTestOptions& o)
 {
     const double pi = std::numbers::pi, sigma = 1.0;
@@ -35,11 +47,10 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
         throw InputError("C = " + std::to_string(o.C) + " with overlap = " + std::to_string(o.overlap) +
                          ": the groove vertex would touch only one vertex; need C sin(pi/N) < 1 - overlap");
     const double a0 = 0.5 * n * R * R * std::sin(2 * pi / n); // area of the regular N-gon
-    const double a_min = minimum_shape_parameter(n);
-    const double A0 = o.A0 == 0 ? a_min : o.A0;
-    if (A0 < a_min)
-        throw InputError("A0 = " + std::to_string(o.A0) +
-                         ": must be 0 (A_min) or >= A_min(N) = " + std::to_string(a_min));
+    const double A0 = o.A0.value_or(minimum_shape_parameter(n));
+    if (A0 < minimum_shape_parameter(n)) // no N-gon has a smaller shape parameter
+        throw InputError("A0 = " + std::to_string(A0) +
+                         " is below A_min(N) = " + std::to_string(minimum_shape_parameter(n)));
 
     ShapeParameters shape;
     shape.ka = o.ka * sigma * sigma / (a0 * a0);
@@ -66,16 +77,11 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
             x(i) += 1e-3 * shape.l0 * rng.normal(1.0);
     }
     const Particle beta = system.particles[0], mu = system.particles[1];
-    const auto beta_x = x.segment(2 * beta.first, 2 * beta.count).reshaped(2, beta.count).row(0);
-    result.d_beta = beta_x.maxCoeff() - beta_x.minCoeff() + sigma; // D_beta (section 9.3.3)
-    for (int v = mu.first; v < mu.first + mu.count; ++v)
-        x(2 * v) += o.x_start * result.d_beta; // start position of mu
     for (int v : {0, 1})
         system.anchors.push_back({beta.first + v, x.segment<2>(2 * (beta.first + v)), o.k_constraint});
     const int top_vertex = mu.first + n / 2;
     for (int v : {top_vertex - 1, top_vertex, top_vertex + 1})
         system.anchors.push_back({v, x.segment<2>(2 * v), o.k_constraint});
-    const double beta_mid = 0.5 * (system.anchors[0].position.x() + system.anchors[1].position.x());
 
     // FIRE's velocity Verlet (unit masses) is stable for dt < 2/sqrt(lambda_max); lambda_max of the
     // dynamical matrix at the start (shape terms and anchors dominate it) sets dt_max = 1/sqrt(lambda_max).
@@ -84,6 +90,34 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
     fire.dt_max = 1.0 / std::sqrt(lambda_max);
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-11;
+
+    // Rest shapes (decision dpm-shear-rest-shapes): each particle relaxes alone (no interaction, anchors
+    // on); a shell at A0 = A_min stays the regular polygon, a floppy particle with A0 > A_min does not. Then
+    // mu is moved so that the vertical gap between its lowest and beta's highest vertex is that of the
+    // regular polygons in the groove position, and to its start x_start D_beta.
+    system.interaction = InteractionKind::none;
+    const FireResult rest = relax_fire(system, x, fire);
+    system.interaction = o.interaction;
+    result.iterations += rest.iterations;
+    if (!rest.converged)
+        throw NumericalError("FIRE relaxation of the rest shapes (force rms " +
+                                 std::to_string(rest.force_rms) + ")",
+                             0, "stiff shape terms; lower dt_max");
+    const auto ys = [&x](const Particle& q) {
+        return x.segment(2 * q.first, 2 * q.count).reshaped(2, q.count).row(1);
+    };
+    const auto beta_x = x.segment(2 * beta.first, 2 * beta.count).reshaped(2, beta.count).row(0);
+    result.d_beta = beta_x.maxCoeff() - beta_x.minCoeff() + sigma; // D_beta (section 9.3.3)
+    const double groove_gap = h - R - top;
+    const Eigen::Vector2d shift(o.x_start * result.d_beta,
+                                ys(beta).maxCoeff() + groove_gap - ys(mu).minCoeff());
+    for (int v = mu.first; v < mu.first + mu.count; ++v)
+        x.segment<2>(2 * v) += shift;
+    for (std::size_t a = 2; a < system.anchors.size(); ++a)
+        system.anchors[a].position += shift;
+    const double beta_mid = 0.5 * (system.anchors[0].position.x() + system.anchors[1].position.x());
+    result.configurations.reserve(static_cast<std::size_t>((o.x_end - o.x_start) / o.dx) + 2);
+
     const int steps = static_cast<int>(std::floor((o.x_end - o.x_start) / o.dx + 1e-9));
     for (int step = 0; step <= steps; ++step) {
         if (step > 0)
@@ -95,23 +129,20 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
             throw NumericalError("FIRE relaxation of the shear step (force rms " +
                                      std::to_string(relaxed.force_rms) + ")",
                                  step, "stiff shape terms against soft contacts; lower dt_max");
-        Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
-        total_energy(system, x, &g, nullptr, interaction_part);
-        const Eigen::Vector2d force =
-            -g.segment(2 * mu.first, 2 * mu.count).reshaped(2, mu.count).rowwise().sum();
-        const Eigen::Vector2d normal = (centre_of_mass(x, mu) - centre_of_mass(x, beta)).normalized();
-        const Eigen::Vector2d tangent(-normal.y(), normal.x()); // n x t = z
+        const ContactForce force = contact_force_on_mu(system, x);
         ShearSample sample;
         sample.x_over_d = (system.anchors[3].position.x() - beta_mid) / result.d_beta;
-        sample.normal_force = force.dot(normal);
-        sample.tangential_force = force.dot(tangent);
+        sample.normal_force = force.normal;
+        sample.tangential_force = force.tangential;
         sample.energy = relaxed.energy;
         sample.iterations = relaxed.iterations;
+        result.configurations.push_back({sample.x_over_d, x});
         if (sample.normal_force <= 0) continue; // not in contact
         sample.mu_eff = sample.tangential_force / sample.normal_force;
         if (result.samples.empty() || sample.mu_eff > result.mu_eff_max) {
             result.mu_eff_max = sample.mu_eff;
             result.x_at_max = sample.x_over_d;
+            result.x_star = x;
         }
         result.samples.push_back(sample);
     }

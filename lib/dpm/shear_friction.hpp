@@ -11,7 +11,8 @@
 // with F_mb = -sum_i grad_{r_mu i} U_int the force of beta on mu and n_bm the unit vector from beta's to
 // mu's centre of mass (vertex mean). The vertical separation of the anchors is fixed by the rest overlap
 // `overlap` = 1 - r/sigma of mu's bottom vertex with beta's two top vertices in the groove position of the
-// undeformed polygons (decision dpm-shear-overlap).
+// undeformed polygons (decision dpm-shear-overlap), applied to the relaxed rest shapes (decision
+// dpm-shear-rest-shapes: floppy particles with A0 > A_min are not regular polygons).
 #pragma once
 
 #include "dpm/system.hpp"
@@ -25,7 +26,7 @@ struct ShearTestOptions
     InteractionKind interaction = InteractionKind::rough;
     int nodes = 8;
     double C = 1.3;                     // R / sigma
-    double A0 = 0;                      // preferred shape parameter; 0 = A_min(nodes)
+    std::optional<double> A0;           // preferred shape parameter >= A_min(nodes); absent: A_min
     double kl = 100;                    // k_l / k_c
     double kb = 171;                    // k_b / (k_c sigma^2)
     double ka = 14;                     // k_a a0^2 / (k_c sigma^2)
@@ -54,7 +55,20 @@ struct ShearTestResult
     long iterations = 0;              // FIRE iterations in all
     DpmSystem system;                 // final state
     Eigen::VectorXd x;
+    Eigen::VectorXd x_star; // the configuration at the maximum of mu_eff (the star of Fig. 9.8d)
+    // Every relaxed configuration (in contact or not) with its x_bm / D_beta, for the frames of
+    // Figs. 9.8, 9.9.
+    std::vector<std::pair<double, Eigen::VectorXd>> configurations;
 };
+
+// Force of beta (particle 0) on mu (particle 1), F_mb = -sum_i grad_{r_mu i} U_int, projected on n_bm (from
+// beta's to mu's vertex mean) and t_bm (n x t = z), eqs. (9.11)-(9.12); mu_eff = tangential / normal (9.10).
+struct ContactForce
+{
+    double normal = 0, tangential = 0; // [k_c sigma]
+    double energy = 0;                 // U_int [k_c sigma^2]
+};
+ContactForce contact_force_on_mu(const DpmSystem& system, const Eigen::VectorXd& x);
 
 // Eq. (9.13): maximum friction of rough circular particles, ([1/(C sin(pi/N))]^2 - 1)^(-1/2).
 double rough_friction_maximum(double C, int nodes);

@@ -1,10 +1,59 @@
 // dpm.shear_friction: the simple-shear test of section 9.3.3 (Figs. 9.8, 9.9): mu_eff against x/D.
 #include "dpm/shear_scene.hpp"
 
+#include "core/errors.hpp"
 #include "core/output.hpp"
+#include "dpm/frozen_contact.hpp"
+#include "dpm/preferred_shape.hpp"
 #include "dpm/shear_friction.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace softgrain::dpm {
+
+namespace {
+
+std::vector<Column> outline_columns()
+{
+    return {{"frame", "1", "snapshot number (1, 2, ...; 0 = final state)"},
+            {"x_over_D", "1", "x_bm / D_beta of the snapshot"},
+            {"particle", "1", "0 = beta (fixed), 1 = mu (dragged)"},
+            {"x", "sigma", "vertex x (closed outline: first vertex repeated)"},
+            {"y", "sigma", "vertex y"}};
+}
+
+void write_outlines(Table& table, const DpmSystem& system, const Eigen::VectorXd& x, int frame,
+                    double x_over_d)
+{
+    for (std::size_t m = 0; m < system.particles.size(); ++m) {
+        const Particle& q = system.particles[m];
+        for (int v = 0; v <= q.count; ++v) { // closed outline
+            const int w = q.first + v % q.count;
+            table.row({double(frame), x_over_d, double(m), x(2 * w), x(2 * w + 1)});
+        }
+    }
+}
+
+// Frames 1..n of Figs. 9.8(a-c), 9.9(a, c): the relaxed configurations nearest to n positions evenly spaced
+// from the first to the last contact.
+void write_frames(const Parameters& p, const ShearTestResult& r, RunContext& context)
+{
+    const int frames = static_cast<int>(p.integer("frames"));
+    if (frames == 0 || r.samples.empty()) return;
+    auto& table = context.table("frames.dat", outline_columns());
+    const double first = r.samples.front().x_over_d, last = r.samples.back().x_over_d;
+    for (int k = 0; k < frames; ++k) {
+        const double wanted = frames == 1 ? first : first + (last - first) * k / (frames - 1);
+        const auto nearest = std::min_element(
+            r.configurations.begin(), r.configurations.end(), [wanted](const auto& a, const auto& b) {
+                return std::abs(a.first - wanted) < std::abs(b.first - wanted);
+            });
+        write_outlines(table, r.system, nearest->second, k + 1, nearest->first);
+    }
+}
+
+} // namespace
 
 void run_shear_friction(const Parameters& p, RunContext& context)
 {
@@ -12,7 +61,7 @@ void run_shear_friction(const Parameters& p, RunContext& context)
     o.interaction = interaction_from_name(p.choice("interaction"));
     o.nodes = static_cast<int>(p.integer("nodes"));
     o.C = p.real("C");
-    o.A0 = p.real("A0");
+    o.A0 = preferred_shape_parameter(p, "A0", o.nodes);
     o.kl = p.real("kl");
     o.kb = p.real("kb");
     o.ka = p.real("ka");
@@ -33,18 +82,35 @@ void run_shear_friction(const Parameters& p, RunContext& context)
                                               {"energy", "k_c sigma^2", "total energy after relaxation"}});
     for (const ShearSample& s : r.samples)
         table.row({s.x_over_d, s.mu_eff, s.normal_force, s.tangential_force, s.energy});
-    auto& shape = context.table("final_shape.dat", {{"particle", "1", "0 = beta (fixed), 1 = mu (dragged)"},
-                                                    {"x", "sigma", "vertex x"},
-                                                    {"y", "sigma", "vertex y"}});
-    for (std::size_t m = 0; m < r.system.particles.size(); ++m) {
-        const Particle& q = r.system.particles[m];
-        for (int v = 0; v <= q.count; ++v) { // closed outline
-            const int w = q.first + v % q.count;
-            shape.row({double(m), r.x(2 * w), r.x(2 * w + 1)});
-        }
-    }
+    write_outlines(context.table("final_shape.dat", outline_columns()), r.system, r.x, 0, 0);
+    write_frames(p, r, context);
 
     auto& s = context.summary();
+    if (p.boolean("frozen_scan")) {
+        if (r.samples.empty() || o.interaction != InteractionKind::smooth)
+            throw InputError("frozen_scan = true needs interaction = smooth and a contact (Appendix A)");
+        const int nx = static_cast<int>(p.integer("scan_points"));
+        const FrozenContactScan scan = frozen_contact_scan(r.system, r.x_star, nx, nx);
+        auto& scan_table = context.table(
+            "frozen_contact.dat",
+            {{"rx", "sigma", "x of r_{beta r, mu t} (mu translated rigidly, shapes of the maximum)"},
+             {"ry", "sigma", "y of r_{beta r, mu t}"},
+             {"overlap_fraction", "1", "ry / ry at zero overlap (0 = deepest, 1 = zero-overlap limit)"},
+             {"mu_eff", "1", "F_t / F_n, eq. (9.10)"},
+             {"F_n", "k_c sigma", "eq. (9.11)"},
+             {"F_t", "k_c sigma", "eq. (9.12)"}});
+        for (const FrozenContactPoint& q : scan.points)
+            scan_table.row({q.rx, q.ry, q.overlap_fraction, q.mu_eff, q.normal, q.tangential});
+        write_outlines(context.table("star_shape.dat", outline_columns()), r.system, r.x_star, 0, r.x_at_max);
+        s["frozen_star_rx"] = scan.star.x();
+        s["frozen_star_ry"] = scan.star.y();
+        s["frozen_mu_eff_star"] = scan.mu_eff_star;
+        s["frozen_mu_eff_max_at_star_height"] = scan.mu_eff_max_at_star_height;
+        s["frozen_rx_at_max"] = scan.rx_at_max;
+        s["frozen_min_force"] = scan.min_force;
+        s["frozen_mu_eff_zero_overlap"] = scan.mu_eff_zero_overlap;
+    }
+
     s["mu_eff_max"] = r.mu_eff_max;
     s["x_at_max"] = r.x_at_max;
     s["mu_eff_max_eq_9_13"] = rough_friction_maximum(o.C, o.nodes);
@@ -61,8 +127,8 @@ std::vector<ParameterSpec> shear_friction_parameters()
             .at_least(4),
         ParameterSpec::real("C", 1.3, "1", "C = R/sigma, polygon circumradius over vertex diameter")
             .positive(),
-        ParameterSpec::real("A0", 0.0, "1", "preferred shape parameter; 0 selects A_min = N tan(pi/N)/pi")
-            .non_negative(),
+        preferred_shape_parameter_spec(1.0, true,
+                                       "preferred shape parameter (N l0)^2/(4 pi a0); min = N tan(pi/N)/pi"),
         ParameterSpec::real("kl", 100.0, "k_c", "edge stiffness k_l/k_c (stiff shells 100, floppy 1)")
             .positive(),
         ParameterSpec::real("kb", 171.0, "k_c sigma^2", "bending stiffness k_b/(k_c sigma^2); 0 = floppy")
@@ -78,6 +144,12 @@ std::vector<ParameterSpec> shear_friction_parameters()
         ParameterSpec::real("x_start", -0.7, "D_beta", "first x_bm / D_beta"),
         ParameterSpec::real("x_end", 0.7, "D_beta", "last x_bm / D_beta"),
         ParameterSpec::integer("seed", 1, "1", "noise seed for floppy particles (kb = 0)").non_negative(),
+        ParameterSpec::integer("frames", 7, "1", "snapshots over the contact range written to frames.dat")
+            .non_negative(),
+        ParameterSpec::boolean("frozen_scan", false,
+                               "Appendix A (Fig. 9.19e): mu_eff with the shapes of the maximum frozen, mu "
+                               "translated (smooth interaction)"),
+        ParameterSpec::integer("scan_points", 41, "1", "frozen scan: points per direction").at_least(3),
     };
 }
 

@@ -1,5 +1,5 @@
 # DPM-Fig9.14a: |lambda~_k| of single floppy / shell / surface-tension particles (runs in sweep order:
-# floppy A0=0, floppy 1.04, shell 0, shell 1.04, surface 0, surface 1.04).
+# floppy A0=min, floppy 1.04, shell min, shell 1.04, surface min, surface 1.04).
 set logscale y
 set format y "10^{%T}"
 set xlabel "mode index k"

@@ -1,0 +1,112 @@
+#include "dpm/boundary_jam.hpp"
+
+#include "core/errors.hpp"
+#include "core/fire.hpp"
+#include "core/rng.hpp"
+#include "dpm/modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace softgrain::dpm {
+
+namespace {
+
+// theta: for the contact graph of 4 disks, the smallest angle at a disk between its two neighbours along a
+// 4-cycle of contacts (the parallelogram's smaller interior angle, <= 90 degrees); NaN without a 4-cycle.
+double parallelogram_angle(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& contacts)
+{
+    const auto touching = [&](int a, int b) {
+        return std::find(contacts.begin(), contacts.end(), std::pair{std::min(a, b), std::max(a, b)}) !=
+               contacts.end();
+    };
+    double best = std::numeric_limits<double>::quiet_NaN();
+    const int cycles[3][4] = {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}};
+    for (const auto& c : cycles) {
+        bool closed = true;
+        for (int k = 0; k < 4; ++k)
+            closed = closed && touching(c[k], c[(k + 1) % 4]);
+        if (!closed) continue;
+        for (int k = 0; k < 4; ++k) {
+            const Eigen::Vector2d p = x.segment<2>(2 * c[k]);
+            const Eigen::Vector2d a = x.segment<2>(2 * c[(k + 3) % 4]) - p,
+                                  b = x.segment<2>(2 * c[(k + 1) % 4]) - p;
+            const double angle = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+            const double smaller = std::min(angle, std::numbers::pi - angle) * 180 / std::numbers::pi;
+            if (!(smaller >= best)) best = smaller; // NaN-safe minimum
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
+{
+    const double pi = std::numbers::pi, d = 1.0, energy_target = 1e-8;
+    BoundaryJamResult out;
+    DpmSystem& s = out.system;
+    s.interaction = InteractionKind::rough;
+    Eigen::VectorXd& x = out.x;
+    Rng rng(o.seed);
+    // Disks at random in a circle of radius 1.5 d, not overlapping; the ring of radius 2.5 d around them.
+    std::vector<Eigen::Vector2d> centres;
+    while (static_cast<int>(centres.size()) < o.disks) {
+        const double r = 1.5 * std::sqrt(rng.uniform()), phi = 2 * pi * rng.uniform();
+        const Eigen::Vector2d c(r * std::cos(phi), r * std::sin(phi));
+        bool free = true;
+        for (const auto& q : centres)
+            free = free && (c - q).norm() > d;
+        if (free) {
+            centres.push_back(c);
+            s.add_particle(Eigen::Matrix2Xd(c), d, ShapeParameters{}, x);
+        }
+    }
+    const double ring_radius = 2.5 * d + o.boundary_sigma;
+    ShapeParameters ring;
+    ring.kl = o.kl;
+    ring.l0 = 2 * ring_radius * std::sin(pi / o.boundary_nodes);
+    s.add_particle(regular_polygon(o.boundary_nodes, ring_radius, Eigen::Vector2d::Zero(), 0.0),
+                   o.boundary_sigma, ring, x);
+    if (ring.l0 >= o.boundary_sigma)
+        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
+                         ": ring vertices must overlap their neighbours (edge " + std::to_string(ring.l0) +
+                         ")");
+
+    FireOptions fire;
+    fire.dt_max = 0.3 / std::sqrt(std::max(4.0, 4 * o.kl));
+    fire.dt_initial = 0.25 * fire.dt_max;
+    fire.force_tolerance = 1e-3 * std::sqrt(energy_target);
+    double step = 1e-2; // relative shrink of l0
+    for (int k = 0;; ++k) {
+        if (k > 10000 || step < 1e-12)
+            throw NumericalError("boundary jamming (energy " + std::to_string(out.energy) + ")", k,
+                                 "the bisection on the ring's rest length did not bracket the target");
+        const Eigen::VectorXd x_before = x;
+        const double l0_before = s.particles.back().shape.l0;
+        s.particles.back().shape.l0 *= 1 - step;
+        const FireResult r = relax_fire(s, x, fire);
+        out.iterations += r.iterations;
+        if (!r.converged) throw NumericalError("FIRE in the boundary", k, "time step too large");
+        if (r.energy > 2 * energy_target) { // overshoot: undo, halve
+            x = x_before;
+            s.particles.back().shape.l0 = l0_before;
+            step *= 0.5;
+            continue;
+        }
+        out.energy = r.energy;
+        if (r.energy >= energy_target) break;
+    }
+    std::vector<std::pair<int, int>> contacts;
+    for (int a = 0; a < o.disks; ++a)
+        for (int b = a + 1; b < o.disks; ++b)
+            if ((x.segment<2>(2 * a) - x.segment<2>(2 * b)).norm() < d) contacts.push_back({a, b});
+    out.disk_contacts = static_cast<int>(contacts.size());
+    out.theta = o.disks == 4 ? parallelogram_angle(x, contacts) : std::numeric_limits<double>::quiet_NaN();
+    return out;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,38 @@
+// Jammed packings of N = 4 monodisperse disks inside a deformable boundary, DPM Fig. 9.18(a)-(e)
+// (section 9.5): a closed ring of N_mu vertices with edge springs only (k_l > 0, k_a = k_b = gamma = 0,
+// eq. 9.1) around 4 disks of diameter d = 1; disks and ring vertices repel by eq. (9.4) (one-vertex
+// particles; k_c = 1). Protocol (decision dpm-boundary-jam): disks placed at random inside the ring; the
+// rest edge length l0 of the ring shrinks in steps, FIRE after each; a step whose relaxed energy exceeds
+// 2 U_t is undone and halved; jammed at U_t <= U < 2 U_t (U_t = 1e-8 k_c d^2), the protocol of section 9.4
+// with the energy in place of the pressure. The packing is described by its disk-disk contacts and by theta,
+// the smaller interior angle of the parallelogram formed by the four contacting disks.
+#pragma once
+
+#include "dpm/system.hpp"
+
+#include <cstdint>
+
+namespace softgrain::dpm {
+
+struct BoundaryJamOptions
+{
+    int disks = 4;
+    int boundary_nodes = 100;
+    double boundary_sigma = 0.25; // ring vertex diameter / disk diameter
+    double kl = 1.0;              // ring edge stiffness / k_c
+    std::uint64_t seed = 1;
+};
+
+struct BoundaryJamResult
+{
+    DpmSystem system; // particles 0 .. disks-1: disks; last: the ring
+    Eigen::VectorXd x;
+    int disk_contacts = 0; // disk pairs closer than d
+    double theta = 0;      // degrees; NaN without a 4-cycle of contacts
+    double energy = 0;     // at jamming [k_c d^2]
+    long iterations = 0;
+};
+
+BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& options);
+
+} // namespace softgrain::dpm
