@@ -34,8 +34,8 @@ void register_dpm_scenes(SceneRegistry& registry)
               dpm::jam_parameters(), dpm::run_jam});
     registry.add(
         Scene{"dpm.compress2d",
-              "DPM sec. 9.3.4: an elastic shell compressed between two plates, F_a against delta/D and "
-              "its small-strain exponent (Fig. 9.10)",
+              "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two plates, "
+              "F_a against delta/D, its small-strain exponent and eq. (9.14) (Fig. 9.10)",
               dpm::compress2d_parameters(), dpm::run_compress2d});
     registry.add(Scene{"dpm.compress_box",
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
