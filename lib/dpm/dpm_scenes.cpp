@@ -8,6 +8,7 @@
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
 #include "dpm/shear_scene.hpp"
+#include "dpm/scenes3d.hpp"
 
 namespace softgrain {
 
@@ -45,6 +46,14 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.18(a-e): jammed packings of 4 disks inside a floppy deformable boundary, "
                        "distinct packings by contacts and parallelogram angle",
                        dpm::boundary_jam_parameters(), dpm::run_boundary_jam});
+    registry.add(Scene{"dpm.shape3d",
+                       "DPM sec. 9.3.1: closed triangulated meshes (Platonic solids, geodesic icosahedra), "
+                       "Euler counts and the 3D shape parameter A^3D",
+                       dpm::shape3d_parameters(), dpm::run_shape3d});
+    registry.add(Scene{"dpm.modes3d",
+                       "DPM eq. (9.2), (9.28): eigenvalues of the dynamical matrix of a single 3D floppy / "
+                       "shell / surface-tension particle and its zero modes (Fig. 9.15a)",
+                       dpm::modes3d_parameters(), dpm::run_modes3d});
 }
 
 } // namespace softgrain

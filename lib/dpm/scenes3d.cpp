@@ -1,0 +1,129 @@
+// dpm.shape3d: the closed triangulated meshes of section 9.3.1, their Euler counts and the shape
+// parameter A^3D = s^(3/2)/(6 sqrt(pi) v) of the undeformed mesh (the text's A_min^3D).
+// dpm.modes3d: eigenvalues of the dynamical matrix (eq. 9.28) of a single floppy, shell or
+// surface-tension particle in 3D (Fig. 9.15a).
+#include "dpm/scenes3d.hpp"
+
+#include "core/output.hpp"
+#include "dpm/single_particle3d.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <optional>
+
+namespace softgrain::dpm {
+
+namespace {
+
+const std::vector<std::string> mesh_names{"tetrahedron", "octahedron",  "icosahedron",
+                                          "geodesic42",  "geodesic162", "geodesic642"};
+
+// A0 of the run: none (the mesh's own A^3D) for the keyword `min`.
+std::optional<double> preferred_shape3d(const Parameters& p)
+{
+    if (p.keyword("A0")) return std::nullopt;
+    return p.real("A0");
+}
+
+} // namespace
+
+void run_shape3d(const Parameters& p, RunContext& context)
+{
+    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
+    const Eigen::VectorXd x = mesh_coordinates(mesh);
+    const double volume = mesh_volume(mesh, x, 0), surface = mesh_surface_area(mesh, x, 0);
+    const std::vector<double> areas = mesh_face_areas(mesh, x, 0), angles = mesh_bending_angles(mesh, x, 0);
+    auto& faces =
+        context.table("faces.dat", {{"f", "1", "face index"},
+                                    {"area", "R^2", "face area a_f (vertices on the unit sphere)"}});
+    for (std::size_t f = 0; f < areas.size(); ++f)
+        faces.row({double(f), areas[f]});
+    auto& s = context.summary();
+    s["vertices"] = mesh.vertex_count();
+    s["faces"] = mesh.face_count();
+    s["edges"] = mesh.edge_count();
+    s["euler_characteristic"] = mesh.vertex_count() + mesh.face_count() - mesh.edge_count();
+    s["volume"] = volume;
+    s["surface_area"] = surface;
+    s["shape_parameter_min"] = shape_parameter3d(surface, volume);
+    s["face_area_ratio"] =
+        *std::max_element(areas.begin(), areas.end()) / *std::min_element(areas.begin(), areas.end());
+    s["bending_angle_min"] = *std::min_element(angles.begin(), angles.end());
+    s["bending_angle_max"] = *std::max_element(angles.begin(), angles.end());
+}
+
+std::vector<ParameterSpec> shape3d_parameters()
+{
+    return {ParameterSpec::choice("mesh", "geodesic42", mesh_names,
+                                  "closed triangulated surface: Platonic solid or geodesic icosahedron "
+                                  "(vertices projected to the unit sphere)")};
+}
+
+void run_modes3d(const Parameters& p, RunContext& context)
+{
+    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
+    Stiffness3d k;
+    k.ka = p.real("ka");
+    k.kb = p.real("kb");
+    k.gamma = p.real("gamma");
+    const auto seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(seed);
+    const SingleParticle3d particle = single_particle3d_equilibrium(shape_model_from_name(p.choice("model")),
+                                                                    mesh, preferred_shape3d(p), k, seed);
+    context.count_steps(particle.fire_iterations);
+
+    // Eq. (9.28) with unit vertex masses; eigenvalues in k_v v0^(4/3) = 1.
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(particle.x.size(), particle.x.size());
+    shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &m);
+    const Eigen::VectorXd lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
+    const double threshold = p.real("zero_threshold");
+    const auto zero = static_cast<int>((lambda.array() < threshold).count());
+    auto& spectrum =
+        context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
+                                          {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k of M, eq. (9.28)"},
+                                          {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
+    for (Eigen::Index i = 0; i < lambda.size(); ++i)
+        spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
+
+    const Eigen::VectorXd& x = particle.x;
+    auto& s = context.summary();
+    s["zero_modes"] = zero;
+    s["zero_modes_nontrivial"] = zero - 6;
+    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
+    s["lambda_smallest_nonzero"] =
+        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
+    s["lambda_max"] = lambda(lambda.size() - 1);
+    s["vertices"] = particle.mesh.vertex_count();
+    s["A_mesh"] = particle.A_mesh;
+    s["A0_used"] = particle.A0;
+    s["shape_parameter"] =
+        shape_parameter3d(mesh_surface_area(particle.mesh, x, 0), mesh_volume(particle.mesh, x, 0));
+    s["volume"] = mesh_volume(particle.mesh, x, 0);
+    s["energy"] = shape_energy3d(particle.shape, particle.mesh, x, 0, nullptr, nullptr);
+    s["force_max"] = particle.force_max;
+}
+
+std::vector<ParameterSpec> modes3d_parameters()
+{
+    return {
+        ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension"},
+                              "particle type of Table 9.1 (3D analogues)"),
+        ParameterSpec::choice("mesh", "geodesic42", mesh_names, "surface mesh of the particle"),
+        ParameterSpec::real("A0", 1.04, "1",
+                            "preferred shape parameter (sum a_f0)^(3/2)/(6 sqrt(pi) v0); min selects the "
+                            "mesh's own A^3D (A_min of the text)")
+            .at_least(1.0)
+            .keyword_allowed("min"),
+        ParameterSpec::real("ka", 1.0, "k_v v0^(2/3)", "face-area stiffness k_a").positive(),
+        ParameterSpec::real("kb", 0.1, "k_v v0^2", "bending stiffness k_b (shell)").positive(),
+        ParameterSpec::real("gamma", 0.01, "k_v v0^(5/3)", "surface tension gamma (surface_tension)")
+            .positive(),
+        ParameterSpec::real("zero_threshold", 1e-10, "k_v v0^(4/3)",
+                            "zero mode: lambda~ below this (Fig. 9.15a)")
+            .positive(),
+        ParameterSpec::integer("seed", 1, "1", "seed of the random displacement of the start").non_negative(),
+    };
+}
+
+} // namespace softgrain::dpm

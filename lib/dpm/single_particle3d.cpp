@@ -1,0 +1,89 @@
+#include "dpm/single_particle3d.hpp"
+
+#include "core/errors.hpp"
+#include "core/fire.hpp"
+#include "core/rng.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace softgrain::dpm {
+
+double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
+                     int max_steps)
+{
+    const auto n = x.size();
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+    for (int step = 0; step < max_steps; ++step) {
+        g.setZero();
+        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+        energy(x, &g, &m);
+        if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+        const Eigen::VectorXd& lambda = solver.eigenvalues();
+        const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
+        const Eigen::VectorXd projected = solver.eigenvectors().transpose() * g;
+        Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(n);
+        for (Eigen::Index k = 0; k < n; ++k)
+            if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
+        x -= solver.eigenvectors() * step_in_modes;
+    }
+    g.setZero();
+    energy(x, &g, nullptr);
+    return g.cwiseAbs().maxCoeff();
+}
+
+SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleMesh& mesh,
+                                               std::optional<double> A0, const Stiffness3d& k,
+                                               std::uint64_t seed)
+{
+    SingleParticle3d p;
+    p.mesh = mesh;
+    // Scale the mesh to unit volume.
+    const Eigen::VectorXd unit = mesh_coordinates(mesh);
+    p.mesh.vertices /= std::cbrt(mesh_volume(mesh, unit, 0));
+    const Eigen::VectorXd reference = mesh_coordinates(p.mesh);
+    p.A_mesh = shape_parameter3d(mesh_surface_area(p.mesh, reference, 0), mesh_volume(p.mesh, reference, 0));
+    p.A0 = A0.value_or(p.A_mesh);
+    if (p.A0 < p.A_mesh)
+        throw InputError("parameter 'A0' = '" + std::to_string(p.A0) +
+                         "' is below the mesh's own shape parameter " + std::to_string(p.A_mesh) +
+                         "; allowed: min (the mesh's own) or a real number >= it");
+    const double scale = std::pow(p.A0 / p.A_mesh, 2.0 / 3.0);
+    const bool shell = model == ShapeModel::shell, tension = model == ShapeModel::surface_tension;
+    p.shape = rest_shape_from_mesh(p.mesh, reference, 1.0, k.ka, shell ? k.kb : 0.0, tension ? k.gamma : 0.0,
+                                   scale);
+
+    Rng rng(seed);
+    double edge = 0;
+    for (const auto& e : p.mesh.edges)
+        edge += (p.mesh.vertices.col(e.a) - p.mesh.vertices.col(e.b)).norm();
+    edge /= p.mesh.edge_count();
+    p.x = reference;
+    for (Eigen::Index i = 0; i < p.x.size(); ++i)
+        p.x(i) += 0.05 * edge * rng.uniform(-1, 1);
+
+    const EnergyWithDerivatives energy = [&p](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                              Eigen::MatrixXd* h) {
+        return shape_energy3d(p.shape, p.mesh, y, 0, g, h);
+    };
+    FireOptions options;
+    options.force_tolerance = 1e-9;
+    options.max_iterations = 2000000;
+    const FireResult fire = fire_minimise(
+        p.x,
+        [&energy](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+            f.setZero(y.size());
+            const double u = energy(y, &f, nullptr);
+            f = -f;
+            return u;
+        },
+        options);
+    if (!fire.converged)
+        throw NumericalError("FIRE relaxation of the 3D particle", fire.iterations,
+                             "no equilibrium within max_iterations (stiffness ratios too extreme?)");
+    p.fire_iterations = fire.iterations;
+    p.force_max = polish_newton(energy, p.x, 1e-14, 30);
+    return p;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,57 @@
+// A single 3D deformable particle of Table 9.1 (eq. 9.2) on a closed triangulated mesh, relaxed to a
+// mechanical equilibrium exact to round-off (FIRE, then Newton steps on the exact Hessian), for the mode
+// analysis of section 9.4.3 (Fig. 9.15a).
+//
+// Units: lengths in v0^(1/3) (the mesh is scaled to volume v0 = 1), energies in k_v v0^2 (k_v = 1); so
+// k_a is in k_v v0^(2/3), k_b in k_v v0^2, gamma in k_v v0^(5/3), eigenvalues in k_v v0^(4/3) (the
+// paper's lambda~ of section 9.4.3).
+//   floppy:          k_v, k_a > 0, k_b = 0, gamma = 0
+//   shell:           k_v, k_a, k_b > 0 (theta_e0 = the mesh's angles), gamma = 0
+//   surface_tension: k_v, k_a > 0, k_b = 0, gamma > 0
+// Rest state: v0 = 1, a_f0 = c times the (scaled) mesh's face areas with c = (A0/A_mesh)^(2/3), so that
+// the preferred shape parameter (sum a_f0)^(3/2)/(6 sqrt(pi) v0) is A0 (A0 = A_mesh: the mesh's own).
+#pragma once
+
+#include "dpm/shape_energy.hpp"
+#include "dpm/shape_energy3d.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace softgrain::dpm {
+
+// energy(x, gradient, hessian): the value, adding the gradient and the Hessian when they are not null.
+using EnergyWithDerivatives =
+    std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*, Eigen::MatrixXd*)>;
+
+// Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until
+// the largest gradient component is below force_tolerance or max_steps are done; returns that component.
+// From a FIRE-relaxed state it converges quadratically, also on manifolds of minima (floppy particles).
+double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
+                     int max_steps);
+
+struct Stiffness3d
+{
+    double ka = 1, kb = 0.1, gamma = 0.01; // k_v = 1
+};
+
+struct SingleParticle3d
+{
+    TriangleMesh mesh;
+    ShapeParameters3d shape;
+    Eigen::VectorXd x;    // relaxed vertex coordinates (3N)
+    double A0 = 0;        // preferred shape parameter used
+    double A_mesh = 0;    // shape parameter of the undeformed mesh
+    double force_max = 0; // largest force component left
+    long fire_iterations = 0;
+};
+
+// No `A0` selects the mesh's own shape parameter. The start is the mesh with every coordinate displaced
+// uniformly by up to 0.05 of the mean edge length (seeded), so that floppy particles leave the symmetric
+// (saddle) start.
+SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleMesh& mesh,
+                                               std::optional<double> A0, const Stiffness3d& k,
+                                               std::uint64_t seed);
+
+} // namespace softgrain::dpm

@@ -1,0 +1,151 @@
+// DPM eq. (9.2): every term of the 3D shape energy (volume, face area, dihedral bending, surface tension).
+// Forces are minus the gradient and the Hessian is the derivative of the gradient (central finite
+// differences on randomly perturbed meshes); exact identities: invariance under rigid motions (forces and
+// torques sum to zero) and Euler's theorem for homogeneous measures, x . grad v = 3 v, x . grad s = 2 s,
+// x . grad theta_e = 0 (angles are scale-free), which fixes the gradients' scale independently of any
+// finite difference.
+#include "dpm/shape_energy3d.hpp"
+#include "core/rng.hpp"
+#include "support/tolerance.hpp"
+
+using namespace softgrain;
+using namespace softgrain::dpm;
+using softgrain::verification::round_off;
+using softgrain::verification::Tolerance;
+
+namespace {
+
+// The mesh's vertices shifted off the origin and displaced by up to `noise` times the mean edge.
+Eigen::VectorXd perturbed(const TriangleMesh& mesh, double noise, Rng& rng)
+{
+    Eigen::VectorXd x = mesh_coordinates(mesh);
+    double edge = 0;
+    for (const auto& e : mesh.edges)
+        edge += (mesh.vertices.col(e.a) - mesh.vertices.col(e.b)).norm();
+    edge /= mesh.edge_count();
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+        x(i) += (i % 3 == 0 ? 0.3 : -0.2) + noise * edge * rng.uniform(-1, 1);
+    return x;
+}
+
+// Random stiffnesses and rest values near the mesh's own (so that no penalty is trivially at its minimum).
+ShapeParameters3d random_parameters(const TriangleMesh& mesh, Rng& rng)
+{
+    const Eigen::VectorXd x = mesh_coordinates(mesh);
+    ShapeParameters3d s = rest_shape_from_mesh(mesh, x, rng.uniform(0.5, 2), rng.uniform(0.5, 2),
+                                               rng.uniform(0.5, 2), rng.uniform(0.5, 2));
+    s.v0 *= rng.uniform(0.8, 1.2);
+    for (double& a : s.a0)
+        a *= rng.uniform(0.8, 1.2);
+    for (double& t : s.theta0)
+        t *= rng.uniform(0.5, 1.5);
+    return s;
+}
+
+void check_derivatives(const ShapeParameters3d& s, const TriangleMesh& mesh, const Eigen::VectorXd& x,
+                       unsigned term)
+{
+    const auto dofs = x.size();
+    const int n = mesh.vertex_count();
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(dofs);
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
+    const double energy = shape_energy3d(s, mesh, x, 0, &g, &h, term);
+    // Value alone and with derivatives is the same code, evaluated in double or in AutoDiff (different
+    // rounding): equal to round-off of the O(N_f)-term sums of O(1) measures, absolute since the volume
+    // penalty k_v/2 (v - v0)^2 may be small after the cancellation in v - v0.
+    CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, nullptr, nullptr, term), energy,
+                (Tolerance{10 * round_off, 100 * round_off}));
+    const double step = 1e-6;
+    Eigen::VectorXd g_fd(dofs);
+    Eigen::MatrixXd h_fd(dofs, dofs);
+    for (Eigen::Index k = 0; k < dofs; ++k) {
+        Eigen::VectorXd xp = x, xm = x;
+        xp(k) += step;
+        xm(k) -= step;
+        Eigen::VectorXd gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
+        g_fd(k) = (shape_energy3d(s, mesh, xp, 0, &gp, nullptr, term) -
+                   shape_energy3d(s, mesh, xm, 0, &gm, nullptr, term)) /
+                  (2 * step);
+        h_fd.col(k) = (gp - gm) / (2 * step);
+    }
+    // Central differences with h = 1e-6 on O(1) coordinates: truncation h^2 |U'''| ~ 1e-12, round-off
+    // eps |U| / h ~ 1e-10 (U up to ~10 here); 1e-7 of the largest entry (or of 1) is far above both and
+    // far below the O(1) relative error of a wrong derivative.
+    const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
+    const double h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
+    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
+    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+    CHECK_CLOSE((h - h.transpose()).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off * h_scale}));
+    // Rigid-motion invariance: sum of forces and sum of torques r x F vanish (round-off of N terms).
+    const Eigen::Matrix3Xd r = x.reshaped(3, n), f = g.reshaped(3, n);
+    Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+    for (int i = 0; i < n; ++i)
+        torque += r.col(i).cross(f.col(i));
+    CHECK_CLOSE(f.rowwise().sum().norm(), 0.0, (Tolerance{0, 1000 * round_off * g_scale}));
+    CHECK_CLOSE(torque.norm(), 0.0, (Tolerance{0, 1000 * round_off * g_scale}));
+}
+
+} // namespace
+
+TEST_CASE(
+    "forces = -grad U and Hessian = d(grad U) for each term of eq. (9.2), random meshes [DPM eq. (9.2)]")
+{
+    Rng rng(90201);
+    const std::pair<unsigned, const char*> terms[] = {{volume_term3d, "volume"},
+                                                      {face_area_term3d, "face area"},
+                                                      {bending_term3d, "dihedral bending"},
+                                                      {surface_tension_term3d, "surface tension"},
+                                                      {all_shape_terms3d, "all terms"}};
+    for (const char* name : {"tetrahedron", "icosahedron", "geodesic42"}) {
+        const TriangleMesh mesh = mesh_from_name(name);
+        for (int trial = 0; trial < 2; ++trial) {
+            const ShapeParameters3d s = random_parameters(mesh, rng);
+            const Eigen::VectorXd x = perturbed(mesh, 0.2, rng);
+            for (const auto& [term, term_name] : terms) {
+                CAPTURE(std::string(name));
+                CAPTURE(std::string(term_name));
+                check_derivatives(s, mesh, x, term);
+            }
+        }
+    }
+}
+
+TEST_CASE("Euler's theorem: x . grad v = 3 v, x . grad s = 2 s, x . grad theta = 0 [DPM eq. (9.2)]")
+{
+    // With k_v = 1, v0 = v - 1: grad U_v = (v - v0) grad v = grad v; with gamma = 1: grad U = grad s; with
+    // k_b = 1, theta0 = theta - 1: grad U_b = sum_e grad theta_e. Dilation about the origin scales v by
+    // lambda^3, s by lambda^2 and leaves angles unchanged: exact identities, checked to round-off.
+    Rng rng(90202);
+    const TriangleMesh mesh = mesh_from_name("geodesic42");
+    const Eigen::VectorXd x = perturbed(mesh, 0.2, rng);
+    ShapeParameters3d s = rest_shape_from_mesh(mesh, x, 1, 0, 1, 1);
+    s.v0 -= 1;
+    for (double& t : s.theta0)
+        t -= 1;
+    const double volume = mesh_volume(mesh, x, 0), surface = mesh_surface_area(mesh, x, 0);
+    for (const auto& [term, expected] :
+         {std::pair{volume_term3d, 3 * volume}, std::pair{surface_tension_term3d, 2 * surface},
+          std::pair{bending_term3d, 0.0}}) {
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+        shape_energy3d(s, mesh, x, 0, &g, nullptr, term);
+        CHECK_CLOSE(x.dot(g), expected, (Tolerance{1000 * round_off, 1000 * round_off}));
+    }
+    // Translation leaves v and s unchanged although each face volume r0 . (r1 x r2)/6 changes.
+    Eigen::VectorXd shifted = x;
+    for (int i = 0; i < mesh.vertex_count(); ++i)
+        shifted.segment<3>(3 * i) += Eigen::Vector3d(1.5, -2.0, 0.7);
+    CHECK_CLOSE(mesh_volume(mesh, shifted, 0), volume, (Tolerance{1000 * round_off, 0}));
+}
+
+TEST_CASE("the undeformed mesh is a zero-energy state of its own rest shape [DPM eq. (9.2)]")
+{
+    for (const char* name : {"octahedron", "geodesic162"}) {
+        CAPTURE(std::string(name));
+        const TriangleMesh mesh = mesh_from_name(name);
+        const Eigen::VectorXd x = mesh_coordinates(mesh);
+        const ShapeParameters3d s = rest_shape_from_mesh(mesh, x, 1, 1, 1, 0);
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+        CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, &g, nullptr), 0.0, (Tolerance{0, round_off}));
+        CHECK_CLOSE(g.cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off}));
+    }
+}
