@@ -16,6 +16,23 @@ using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::Tolerance;
 
+namespace {
+
+// The exponent of F ~ delta^e: the least-squares slope of ln F against ln(delta/D) over the samples.
+double force_exponent(const CompressionResult& r)
+{
+    std::vector<double> x, y;
+    for (const auto& s : r.samples) {
+        x.push_back(std::log(s.delta_over_d));
+        y.push_back(std::log(s.force));
+    }
+    double c0, c1, c00, c01, c11, sumsq;
+    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+    return c1;
+}
+
+} // namespace
+
 TEST_CASE(
     "shell between plates: F proportional to delta; ring compliance (pi/4 - 2/pi) R^3/EI [DPM Fig. 9.10]")
 {
@@ -24,13 +41,7 @@ TEST_CASE(
     o.steps = 8;
     o.delta_max = 1e-2;
     const CompressionResult r = compress_shell(o);
-    std::vector<double> x, y;
-    for (const auto& s : r.samples) {
-        x.push_back(std::log(s.delta_over_d));
-        y.push_back(std::log(s.force));
-    }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+    const double c1 = force_exponent(r);
     // Linear springs and linear elasticity of the ring at delta/D <= 1e-2: geometric nonlinearity O(delta/D).
     CHECK_CLOSE(c1, 1.0, (Tolerance{0, 0.01}));
     const double R = 1.0 / (2 * std::sin(pi / o.nodes)), ei = o.kb * 1.0, ea = o.kl * 1.0;
@@ -51,13 +62,7 @@ TEST_CASE("spring-network disk between plates: F proportional to delta at small 
     // The lattice disk touches each plate with a flat row of nodes (its boundary keeps the lattice's mirror
     // symmetry): a flat punch on a linear elastic body, F = K delta with a fixed contact set. Geometric
     // nonlinearity changes the slope by O(delta/D) <= 5e-3; 0.01 allowed.
-    std::vector<double> x, y;
-    for (const auto& s : r.samples) {
-        x.push_back(std::log(s.delta_over_d));
-        y.push_back(std::log(s.force));
-    }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+    const double c1 = force_exponent(r);
     CHECK_CLOSE(c1, 1.0, (Tolerance{0, 0.01}));
     CHECK(r.springs == 837); // the 300 lattice sites nearest to a site: 837 bonds (z = 5.58)
 }
