@@ -5,6 +5,7 @@
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
+#include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
 
 namespace softgrain {
@@ -35,6 +36,10 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.3.4: an elastic shell compressed between two plates, F_a against delta/D and "
               "its small-strain exponent (Fig. 9.10)",
               dpm::compress2d_parameters(), dpm::run_compress2d});
+    registry.add(Scene{"dpm.shear_modulus",
+                       "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
+                       "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",
+                       dpm::shear_modulus_parameters(), dpm::run_shear_modulus});
 }
 
 } // namespace softgrain

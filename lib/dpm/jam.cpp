@@ -148,7 +148,7 @@ JamResult jam(const JamOptions& o)
                 step = std::min(2 * step, largest_step);
             }
         }
-        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations});
+        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations, out.x, *s.box});
     }
     return out;
 }

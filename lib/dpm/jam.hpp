@@ -36,6 +36,8 @@ struct JamState
 {
     double phi = 0, pressure = 0; // pressure in the model's unit
     long fire_iterations = 0;
+    Eigen::VectorXd x;     // the relaxed configuration at this pressure
+    Eigen::Vector2d box{}; // and its box
 };
 
 struct JamResult
