@@ -8,7 +8,7 @@ set key top left
 n = words(rundirs)
 seeds = n / 4
 # Runs are in sweep order: model outer (4 models), seed inner.
-models = "rough_disk shell floppy surface_tension"
+models = "rough-disk shell floppy surface-tension"
 plot for [k=1:n] word(rundirs, k)."/pressure.dat" using (column("dphi") > 0 ? column("dphi") : NaN):"P" \
         ls (1 + (k - 1) / seeds) with linespoints \
         title ((k - 1) % seeds == 0 ? word(models, 1 + (k - 1) / seeds) : ""), \

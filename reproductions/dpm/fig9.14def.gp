@@ -9,7 +9,7 @@ set palette defined (0 "dark-blue", 1 "cyan", 2 "yellow", 3 "dark-red")
 set multiplot layout 1,3
 n = words(rundirs)
 per = n / 3
-models = "floppy shell surface_tension"
+models = "floppy shell surface-tension"
 # The pressure reached by each run: column 2 (pressure_reached) of the reduced table, in run order.
 pressures = system("grep -v '^#' ".datafile." | tail -n +2 | awk '{print $2}'")
 # Runs: model outer, pressure inner (sweep order); each file holds one packing's spectrum.

@@ -5,7 +5,7 @@ set format y "10^{%T}"
 set xlabel "P  (k_a a_0)"
 set ylabel "<G>  (k_a a_0)"
 set key top left
-models = "floppy shell surface_tension"
+models = "floppy shell surface-tension"
 n = words(rundirs)
 plot for [k=1:n] word(rundirs, k)."/mean_modulus.dat" using "P":(column("G") > 0 ? column("G") : NaN) \
         ls k with linespoints title word(models, k), \
