@@ -6,6 +6,7 @@
 
 #include <gsl/gsl_fit.h>
 
+#include <sstream>
 #include <string>
 
 namespace softgrain::dpm {
@@ -17,10 +18,13 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
     std::vector<double> strain;
     const auto minimise = [&](int step) {
         out.force_max = polish_newton(system, x, force_tolerance, 30);
-        if (!(out.force_max < force_tolerance))
-            throw NumericalError("Newton minimisation after a shear step (force " +
-                                     std::to_string(out.force_max) + ")",
-                                 step, "force_tolerance below the round-off of the forces");
+        if (!(out.force_max < force_tolerance)) {
+            std::ostringstream what;
+            what << "Newton minimisation after a shear step (largest force " << out.force_max << ")";
+            throw NumericalError(
+                what.str(), step,
+                "the packing is not at a minimum (a saddle or a soft direction Newton cannot fix)");
+        }
     };
     for (int step = 0; step <= steps; ++step) {
         if (step > 0) shear_packing(system, x, dgamma);
