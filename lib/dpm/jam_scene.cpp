@@ -76,7 +76,7 @@ std::vector<ParameterSpec> jam_parameters()
         ParameterSpec::real("A0_floppy", 1.04, "1", "floppy: preferred shape parameter A0 (Fig. 9.14: 1.04)")
             .at_least(1.0),
         ParameterSpec::real(
-            "kl_surface", 0.0, "k_c",
+            "kl_surface", 0.01, "k_c",
             "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
             .non_negative(),
     };
