@@ -7,6 +7,7 @@
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
+#include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
 #include "dpm/scenes3d.hpp"
 
@@ -54,6 +55,10 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM eq. (9.2), (9.28): eigenvalues of the dynamical matrix of a single 3D floppy / "
                        "shell / surface-tension particle and its zero modes (Fig. 9.15a)",
                        dpm::modes3d_parameters(), dpm::run_modes3d});
+    registry.add(Scene{"dpm.shear_modulus",
+                       "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
+                       "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",
+                       dpm::shear_modulus_parameters(), dpm::run_shear_modulus});
 }
 
 } // namespace softgrain

@@ -27,9 +27,8 @@ std::pair<Eigen::Vector2d, double> bounding_circle(const Particle& p, const Eige
 // The translation that brings particle b to its image closest to particle a (zero without a box).
 Eigen::Vector2d image_shift(const DpmSystem& s, const Eigen::Vector2d& ca, const Eigen::Vector2d& cb)
 {
-    if (!s.box) return Eigen::Vector2d::Zero();
     const Eigen::Vector2d d = cb - ca;
-    return minimum_image(d, *s.box) - d;
+    return s.image(d) - d;
 }
 
 // Local coordinates of `points`, with `shift` added to those of particle b (periodic image).

@@ -4,6 +4,7 @@
 #include "core/rng.hpp"
 #include "dpm/modes.hpp"
 #include "dpm/packing_fraction.hpp"
+#include "dpm/rigid.hpp"
 #include "dpm/stress.hpp"
 
 #include <cmath>
@@ -47,7 +48,8 @@ JamResult jam(const JamOptions& o)
         // Vertex diameter sigma = 1; small polygons of N_small vertices with R/sigma such that neighbouring
         // vertices overlap as in Fig. 9.12 (edge = 0.85 sigma); large ones scaled by size_ratio in diameter
         // with N_large vertices (decision dpm-jam-polygons).
-        const ShapeModel model = shape_model_from_name(o.model);
+        const bool rigid = o.model == "rough_disk";
+        const ShapeModel model = rigid ? ShapeModel::shell : shape_model_from_name(o.model);
         const double r_small = 0.85 / (2 * std::sin(pi / o.nodes_small));
         const double a0_small = 0.5 * o.nodes_small * r_small * r_small * std::sin(2 * pi / o.nodes_small);
         std::vector<std::pair<int, double>> kinds;
@@ -70,8 +72,12 @@ JamResult jam(const JamOptions& o)
             k.kl = 1.0;
             k.kb = 0.1;
             k.gamma = 0.1 * k.ka * std::pow(a0_small, 1.5);
-            const double A0 =
-                model == ShapeModel::floppy ? 1.04 * minimum_shape_parameter(n) : minimum_shape_parameter(n);
+            k.kl_surface = o.kl_surface;
+            if (model == ShapeModel::floppy && o.A0_floppy < minimum_shape_parameter(n))
+                throw InputError("A0 = " + std::to_string(o.A0_floppy) +
+                                 " of the floppy particles is below A_min(" + std::to_string(n) +
+                                 ") = " + std::to_string(minimum_shape_parameter(n)));
+            const double A0 = model == ShapeModel::floppy ? o.A0_floppy : minimum_shape_parameter(n);
             Eigen::Vector2d c;
             for (int tries = 0;; ++tries) {
                 if (tries > 100000)
@@ -85,17 +91,19 @@ JamResult jam(const JamOptions& o)
             centres.push_back(c);
             radii.push_back(r);
             Eigen::Matrix2Xd v = regular_polygon(n, r, c, rng.uniform(0, 2 * pi));
-            s.add_particle(v, 1.0, table_9_1_parameters(model, n, a0, A0, k), out.x);
+            s.add_particle(v, 1.0, rigid ? ShapeParameters{} : table_9_1_parameters(model, n, a0, A0, k),
+                           out.x);
         }
         out.pressure_unit = 1.0 / a0_small; // k_a a0 = (1/a0^2) a0
     }
 
+    const bool rough_disks = o.model == "rough_disk";
     FireOptions fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
     const auto relax = [&](long step_index) {
-        const FireResult r = relax_fire(s, out.x, fire);
+        const FireResult r = rough_disks ? relax_rigid_fire(s, out.x, fire) : relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
             throw NumericalError(
@@ -103,7 +111,10 @@ JamResult jam(const JamOptions& o)
                 step_index, "force tolerance too small for the pressure; raise pressure_onset");
         return r.iterations;
     };
-    const auto current_pressure = [&] { return pressure(stress_tensor(s, out.x)) / out.pressure_unit; };
+    const auto current_pressure = [&] {
+        return pressure(rough_disks ? rigid_stress_tensor(s, out.x) : stress_tensor(s, out.x)) /
+               out.pressure_unit;
+    };
     relax(0);
 
     // Targets: onset, then log-spaced pressures up to pressure_max.
@@ -111,7 +122,8 @@ JamResult jam(const JamOptions& o)
     for (int k = 1; k <= o.pressures; ++k)
         targets.push_back(o.pressure_onset *
                           std::pow(o.pressure_max / o.pressure_onset, double(k) / o.pressures));
-    double step = 5e-3;
+    const double largest_step = 5e-3; // Delta L/L (decision dpm-jam-protocol)
+    double step = largest_step;
     long step_index = 0;
     for (double target : targets) {
         long iterations = 0;
@@ -130,11 +142,13 @@ JamResult jam(const JamOptions& o)
                 out.x = saved_x;
                 *s.box = saved_box;
                 step *= 0.5;
-            } else if (after < 0.5 * target && after > 0) {
-                step *= 2; // far below a target above onset: grow again (decision dpm-jam-protocol)
+            } else if (target > o.pressure_onset && after < 0.5 * target && after > 0) {
+                // Far below a target above onset: grow again, never beyond the first step (decision
+                // dpm-jam-protocol; before onset the pressure is FIRE round-off and says nothing).
+                step = std::min(2 * step, largest_step);
             }
         }
-        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations});
+        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations, out.x, *s.box});
     }
     return out;
 }

@@ -4,7 +4,8 @@
 // step and halve Delta L/L; stop at 1 <= P/P_target < 1.01. Onset: P_target = P_t; then further targets
 // log-spaced up to pressure_max, each reached the same way from the previous packing.
 // Models: smooth_disk = one-vertex particles (purely repulsive linear springs between disk centres, eq. 9.4
-// with sigma = disk diameter); shell, floppy, surface_tension = rough deformable polygons of Table 9.1.
+// with sigma = disk diameter); rough_disk = rigid regular polygons with rough vertices (rigid.hpp); shell,
+// floppy, surface_tension = rough deformable polygons of Table 9.1.
 // Bidisperse 50:50 with diameter ratio 1.4 (disks) or polygon-diameter ratio 1.4 (N_small, N_large vertices).
 #pragma once
 
@@ -18,14 +19,17 @@ namespace softgrain::dpm {
 
 struct JamOptions
 {
-    std::string model = "smooth_disk"; // smooth_disk | shell | floppy | surface_tension
+    std::string model = "smooth_disk"; // smooth_disk | rough_disk | shell | floppy | surface_tension
     int particles = 16;
     int nodes_small = 10, nodes_large = 14;
     double size_ratio = 1.4;
     double pressure_onset = 1e-7; // P_t in units of k_c (disks) or k_a a0 (deformable particles)
     double pressure_max = 1e-3;
-    int pressures = 5;      // targets log-spaced in (P_t, pressure_max]
-    double phi_start = 0.3; // disks: packing fraction of the random start
+    int pressures = 5;       // targets log-spaced in (P_t, pressure_max]
+    double phi_start = 0.3;  // disks: packing fraction of the random start
+    double A0_floppy = 1.04; // floppy particles: preferred shape parameter (Fig. 9.14)
+    double kl_surface =
+        0.01; // surface-tension particles: k_l [k_c] (Table 9.1: ~0; decision dpm-jam-surface-kl)
     std::uint64_t seed = 1;
 };
 
@@ -33,6 +37,8 @@ struct JamState
 {
     double phi = 0, pressure = 0; // pressure in the model's unit
     long fire_iterations = 0;
+    Eigen::VectorXd x;     // the relaxed configuration at this pressure
+    Eigen::Vector2d box{}; // and its box
 };
 
 struct JamResult

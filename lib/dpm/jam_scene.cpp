@@ -22,6 +22,8 @@ void run_jam(const Parameters& p, RunContext& context)
     o.pressure_max = p.real("pressure_max");
     o.pressures = static_cast<int>(p.integer("pressures"));
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    o.A0_floppy = p.real("A0_floppy");
+    o.kl_surface = p.real("kl_surface");
     context.record_seed(o.seed);
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);
@@ -61,15 +63,22 @@ std::vector<ParameterSpec> jam_parameters()
         ParameterSpec::integer("particles", 16, "1", "particles N, half small, half large").at_least(2),
         ParameterSpec::integer("nodes_small", 10, "1", "vertices of the small particles").at_least(3),
         ParameterSpec::integer("nodes_large", 14, "1", "vertices of the large particles").at_least(3),
-        ParameterSpec::choice("model", "smooth_disk", {"smooth_disk", "shell", "floppy", "surface_tension"},
-                              "smooth bidisperse disks or rough deformable particles of Table 9.1 "
-                              "(rough_disk: not implemented)"),
+        ParameterSpec::choice("model", "smooth_disk",
+                              {"smooth_disk", "rough_disk", "shell", "floppy", "surface_tension"},
+                              "smooth bidisperse disks, rigid rough polygons (rough disks) or rough "
+                              "deformable particles of Table 9.1"),
         ParameterSpec::integer("seed", 1, "1", "seed of the random initial placement").non_negative(),
         ParameterSpec::real("pressure_onset", 1e-7, "k_c or k_a a0", "P_t: jamming onset pressure")
             .positive(),
         ParameterSpec::real("pressure_max", 1e-3, "k_c or k_a a0", "largest pressure of the compression")
             .positive(),
         ParameterSpec::integer("pressures", 5, "1", "pressures log-spaced above onset").at_least(1),
+        ParameterSpec::real("A0_floppy", 1.04, "1", "floppy: preferred shape parameter A0 (Fig. 9.14: 1.04)")
+            .at_least(1.0),
+        ParameterSpec::real(
+            "kl_surface", 0.01, "k_c",
+            "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
+            .non_negative(),
     };
 }
 

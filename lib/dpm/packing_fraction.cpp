@@ -50,7 +50,6 @@ bool inside_polygon(const Eigen::Vector2d& p, const Eigen::Matrix2Xd& v)
 PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x, std::size_t m)
 {
     if (!system.box) throw InputError("packing fraction: the system has no periodic box");
-    const Eigen::Vector2d L = *system.box;
     const double pi = std::numbers::pi;
     const Particle& p = system.particles[m];
     PackingAreas t;
@@ -69,8 +68,8 @@ PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd&
             if (b == m) continue;
             const Particle& q = system.particles[b];
             for (int j = q.first; j < q.first + q.count; ++j)
-                t.pair += vertex_overlap_segment(minimum_image(vertex_position(x, j) - here, L).norm(),
-                                                 p.sigma, q.sigma);
+                t.pair += vertex_overlap_segment(system.image(vertex_position(x, j) - here).norm(), p.sigma,
+                                                 q.sigma);
         }
     }
     t.phi = t.polygon + t.vertices - t.sector - t.pair; // A_mu, eq. (9.21)
@@ -124,7 +123,7 @@ PackingAreasEstimate packing_areas_monte_carlo(const DpmSystem& system, const Ei
         double in_polygon = 0, disks = 0, sectors = 0;
         for (std::size_t m = 0; m < polygons.size(); ++m) {
             const Particle& p = system.particles[m];
-            const Eigen::Vector2d image = centres[m] + minimum_image(q - centres[m], L); // q near particle m
+            const Eigen::Vector2d image = centres[m] + system.image(q - centres[m]); // q near particle m
             const bool own = inside_polygon(image, polygons[m]);
             in_polygon += own;
             for (int i = 0; i < p.count; ++i)

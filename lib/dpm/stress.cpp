@@ -56,7 +56,7 @@ std::vector<Eigen::Matrix2d> particle_stresses(const DpmSystem& system, const Ei
             for (int i = p.first; i < p.first + p.count; ++i)
                 for (int j = q.first; j < q.first + q.count; ++j) {
                     const Eigen::Vector2d ri = x.segment<2>(2 * i);
-                    const Eigen::Vector2d rij = minimum_image(x.segment<2>(2 * j) - ri, *system.box);
+                    const Eigen::Vector2d rij = system.image(x.segment<2>(2 * j) - ri);
                     const double r = rij.norm();
                     if (r >= sigma) continue;
                     Eigen::Vector4d local;

@@ -72,6 +72,19 @@ Eigen::Matrix2Xd regular_polygon(int n, double r, const Eigen::Vector2d& c, doub
     return v;
 }
 
+Eigen::Vector2d DpmSystem::image(const Eigen::Vector2d& d) const
+{
+    return box ? lees_edwards_image(d, *box, lees_edwards_strain) : d;
+}
+
+void shear_packing(DpmSystem& system, Eigen::VectorXd& x, double dgamma)
+{
+    if (!system.box) throw std::logic_error("shear_packing: the system has no periodic box");
+    for (Eigen::Index v = 0; v < x.size() / 2; ++v)
+        x(2 * v) += dgamma * x(2 * v + 1);
+    system.lees_edwards_strain += dgamma;
+}
+
 void scale_packing(DpmSystem& system, Eigen::VectorXd& x, double f)
 {
     if (!system.box) throw std::logic_error("scale_packing: the system has no periodic box");

@@ -9,6 +9,7 @@
 
 #include "dpm/shape_energy.hpp"
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -42,11 +43,16 @@ struct DpmSystem
     // Sides (L_x, L_y) of a periodic rectangular box (minimum image between particles); absent: open space.
     // Particles are kept whole (unwrapped); the box must exceed twice the reach of any particle pair.
     std::optional<Eigen::Vector2d> box;
+    // Lees-Edwards shear strain gamma of the box (section 9.4.3): the image above is shifted by gamma L_y in
+    // x.
+    double lees_edwards_strain = 0;
 
     int vertex_count() const
     {
         return particles.empty() ? 0 : particles.back().first + particles.back().count;
     }
+    // Nearest periodic image of a separation (Lees-Edwards minimum image); d itself without a box.
+    Eigen::Vector2d image(const Eigen::Vector2d& d) const;
     // Appends a particle with the given vertices (2 x n, counter-clockwise).
     void add_particle(const Eigen::Matrix2Xd& vertices, double sigma, const ShapeParameters& shape,
                       Eigen::VectorXd& x);
@@ -68,6 +74,20 @@ inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vect
 {
     return d - (L.array() * (d.array() / L.array()).round()).matrix();
 }
+
+// Minimum image under Lees-Edwards boundaries with shear strain gamma: the row of images n_y boxes up is
+// shifted by n_y gamma L_y in x. First the y image, then x: d - n_y (gamma L_y, L_y) - n_x (L_x, 0).
+inline Eigen::Vector2d lees_edwards_image(Eigen::Vector2d d, const Eigen::Vector2d& L, double gamma)
+{
+    const double ny = std::round(d.y() / L.y());
+    d -= ny * Eigen::Vector2d(gamma * L.y(), L.y());
+    d.x() -= L.x() * std::round(d.x() / L.x());
+    return d;
+}
+
+// Simple shear step of section 9.4.3: x_i += dgamma y_i for every vertex, and the Lees-Edwards strain grows
+// by dgamma. The system must have a box.
+void shear_packing(DpmSystem& system, Eigen::VectorXd& x, double dgamma);
 
 // Vertices of a regular n-gon of circumradius r centred at c, counter-clockwise, vertex 0 at angle phase.
 Eigen::Matrix2Xd regular_polygon(int n, double r, const Eigen::Vector2d& c, double phase);

@@ -1,0 +1,13 @@
+# DPM-Fig9.14c-packing: Delta U against Delta r along every mode of a jammed packing of floppy particles.
+set logscale xy
+set format x "10^{%T}"
+set format y "10^{%T}"
+set xlabel "{/Symbol D}r  (a_0^{1/2})"
+set ylabel "{/Symbol D}U  (k_a a_0^2)"
+set yrange [1e-22:*]
+set key top left
+set palette defined (0 "dark-blue", 1 "cyan", 2 "yellow", 3 "dark-red")
+set cblabel "mode index k"
+f = word(rundirs, 1)."/mode_energy.dat"
+plot f using "dr":(column("dU") > 0 ? column("dU") : NaN):"k" with points pt 7 ps 0.3 lc palette notitle, \
+     1e-2*x**2 ls 8 dt 2 title "{/Symbol D}U ~ {/Symbol D}r^2", 1e-1*x**4 ls 8 dt 4 title "{/Symbol D}U ~ {/Symbol D}r^4"
