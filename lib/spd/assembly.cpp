@@ -1,11 +1,9 @@
 #include "spd/assembly.hpp"
 
-#include "core/geometry.hpp"
 #include "core/rng.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace softgrain::spd {
 
@@ -23,18 +21,15 @@ Assembly rings_in_box(const AssemblySetup& setup, int columns)
     const RingScales sc = ring_scales(setup.ring);
     const double r = sc.radius_vertex;
     const double R_max = *std::max_element(a.radii.begin(), a.radii.end());
-    const double pitch = 2 * (R_max + r), row_pitch = setup.loose ? setup.row_spacing * pitch : pitch;
+    const double pitch = 2 * (R_max + r);
     const int rows = (setup.particles + columns - 1) / columns;
-    a.width = (columns + (setup.loose ? 0.5 : 0.0)) * pitch;
-    a.height = (rows - 1) * row_pitch + pitch;
+    a.width = columns * pitch;
+    a.height = rows * pitch;
     for (int p = 0; p < setup.particles; ++p) {
         RingSetup ring = setup.ring;
         ring.radius = a.radii[p];
         const int shell = add_ring(a.model, ring, 0.0);
-        const int row = p / columns;
-        double x = (p % columns + 0.5) * pitch;
-        if (setup.loose) x += 0.5 * pitch * (row % 2) + (R_max - a.radii[p]) * rng.uniform(-1, 1);
-        a.model.translate(shell, Vec2(x, row * row_pitch + 0.5 * pitch));
+        a.model.translate(shell, Vec2((p % columns + 0.5) * pitch, (p / columns + 0.5) * pitch));
         a.particles.push_back(shell);
     }
     Shell wall;
@@ -52,16 +47,6 @@ Assembly rings_in_box(const AssemblySetup& setup, int columns)
     const double k_n = sc.laws.k_s;
     a.model.set_contact_law({k_n, 0.0, 0.0, 2 * std::sqrt(setup.ring.vertex_mass * k_n)});
     return a;
-}
-
-double particle_volume(const ShellModel& model, int shell)
-{
-    const Shell& s = model.shells()[shell];
-    Points<2> polygon(2, s.count);
-    for (int k = 0; k < s.count; ++k)
-        polygon.col(k) = model.vertex(s.first + k);
-    return s.depth * (polygon_signed_area(polygon) + polygon_perimeter(polygon) * s.radius +
-                      std::numbers::pi * s.radius * s.radius);
 }
 
 int particle_vertices(const Assembly& assembly)

@@ -18,10 +18,6 @@ struct AssemblySetup
     RingSetup ring;
     double radius_spread = 0; // Delta R / R (standard deviation)
     std::uint64_t seed = 1;
-    // Loose layout for a deposition: odd rows shifted by half a pitch (the box half a pitch wider), rows
-    // `row_spacing` pitches apart, each ring moved sideways by (R_max - R_i) u, u uniform in [-1, 1).
-    bool loose = false;
-    double row_spacing = 1;
 };
 
 // Rings on a square lattice of pitch 2 (R_max + r) (neighbours touching), `columns` wide, inside a box of
@@ -39,9 +35,5 @@ Assembly rings_in_box(const AssemblySetup& setup, int columns);
 
 // Free (non-rigid) vertices of the assembly.
 int particle_vertices(const Assembly& assembly);
-
-// Volume of a particle: its sphero-polygon area A + P r + pi r^2 (polygon area A, perimeter P, vertex radius
-// r; exact for a convex polygon) times the depth s [m^3] (decision spd-particle-volume).
-double particle_volume(const ShellModel& model, int shell);
 
 } // namespace softgrain::spd

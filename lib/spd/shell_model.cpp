@@ -471,30 +471,6 @@ double ShellModel::bending_energy() const
     return W;
 }
 
-double ShellModel::elastic_energy(int shell) const
-{
-    const Shell& s = shells_[shell];
-    double W = 0;
-    for (int k = 0; k < s.elements(); ++k)
-        W += axial_[s.first + k] * axial_[s.first + k] / (2 * s.laws.k_s);
-    for (int k = 0; k < s.count; ++k)
-        if (s.has_hinge(k)) W += torque_[s.first + k] * torque_[s.first + k] / (2 * s.laws.k_b);
-    if (s.closed && s.K_Omega > 0 && !s.incompressible())
-        W += core_p_[shell] * core_p_[shell] * core_V0_[shell] / (2 * s.K_Omega);
-    return W;
-}
-
-void ShellModel::set_shell_laws(int shell, const ShellLaws& laws, double K_Omega)
-{
-    shells_[shell].laws = laws;
-    shells_[shell].K_Omega = K_Omega;
-    for (int k = 0; k < shells_[shell].elements(); ++k) // the plastic thresholds bound the carried state
-        axial_[shells_[shell].first + k] = std::clamp(axial_[shells_[shell].first + k], -laws.F_Y, laws.F_Y);
-    for (int k = 0; k < shells_[shell].count; ++k)
-        torque_[shells_[shell].first + k] =
-            std::clamp(torque_[shells_[shell].first + k], -laws.M_Y, laws.M_Y);
-}
-
 double ShellModel::kinetic_energy() const
 {
     double K = 0;

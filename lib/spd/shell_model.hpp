@@ -97,9 +97,6 @@ class ShellModel
     double area(int shell) const;  // polygon area [m^2], CCW positive
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
-    // Elastic energy of one shell: stretch and bending as above plus the core energy p^2 V0 / (2 K_Omega) of
-    // eq. (4) (none for an incompressible core, which does no work) [J].
-    double elastic_energy(int shell) const;
     // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
     // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
@@ -122,9 +119,6 @@ class ShellModel
     // Moves one vertex (a prescribed configuration, e.g. for finite-difference checks of the forces).
     void set_vertex(int i, const Vec2& position) { x_.segment<2>(2 * i) = position; }
     void translate(int shell, const Vec2& displacement);
-    // Replaces the laws and the core modulus of a shell from its current state on (the incremental forces,
-    // torques and core pressure carry over; an incompressible core keeps the area of its creation).
-    void set_shell_laws(int shell, const ShellLaws& laws, double K_Omega);
     std::int64_t steps() const { return steps_; }
     double min_vertex_mass() const; // over free vertices [kg]
     // Contact detection cost (decision spd-contact-detection): (vertex, element) pairs checked per step, and

@@ -1,5 +1,5 @@
 // Scenes of the SPD method (Trivino et al.): spd.beam, spd.ring_pressure, spd.ring_compression;
-// assemblies (section 5, assembly_scenes.cpp): spd.bench, spd.compaction.
+// assemblies (section 5, assembly_scenes.cpp): spd.bench.
 #pragma once
 
 #include "core/scene.hpp"
