@@ -160,26 +160,31 @@ Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const
 // histories carry over.
 void ShellModel::update_contact_candidates()
 {
-    double r_all = 0, r_free = 0, L = 0;
+    double r_all = 0, r_free = 0;
     for (const Shell& s : shells_) {
         r_all = std::max(r_all, s.radius);
-        if (s.rigid) continue;
-        r_free = std::max(r_free, s.radius);
-        for (int k = 0; k < s.elements(); ++k)
-            L = std::max(L, (vertex(next(s, k)) - vertex(s.first + k)).norm());
+        if (!s.rigid) r_free = std::max(r_free, s.radius);
     }
     const double reach = r_all + r_free;
+    const auto longest_element = [&] {
+        double L = 0;
+        for (const Shell& s : shells_)
+            if (!s.rigid)
+                for (int k = 0; k < s.elements(); ++k)
+                    L = std::max(L, (vertex(next(s, k)) - vertex(s.first + k)).norm());
+        return L;
+    };
     const Eigen::Map<const Points<2>> positions(x_.data(), 2, vertices());
-    const auto make_list = [&] {
+    const auto make_list = [&](double L) {
         list_length_ = 1.25 * L; // headroom: element growth up to 25% keeps the list
-        const double skin = reach;
+        const double skin = std::max(reach, 0.5 * list_length_);
         const double l_bound = list_length_ + skin;
         neighbours_.emplace(std::sqrt(reach * reach + 0.25 * l_bound * l_bound), skin);
     };
-    if (!neighbours_) make_list();
+    if (!neighbours_) make_list(longest_element());
     if (!neighbours_->update(positions)) return;
-    if (L > list_length_) { // an element outgrew the bound of the cutoff: a list with a larger one
-        make_list();
+    if (const double L = longest_element(); L > list_length_) { // an element outgrew the cutoff's bound
+        make_list(L);
         neighbours_->update(positions);
     }
     ++list_builds_;
