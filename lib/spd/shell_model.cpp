@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 namespace softgrain::spd {
 
@@ -49,6 +50,8 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
     angle_prev_.resize(n0 + n, 0.0);
     torque_.resize(n0 + n, 0.0);
     contact_normal_.resize(n0 + n, 0.0);
+    shell_of_.resize(n0 + n, static_cast<int>(shells_.size()));
+    neighbours_.reset(); // the vertex set changed: a new contact list
     for (int k = 0; k < shell.elements(); ++k)
         length_prev_[n0 + k] = (vertex(next(shell, k)) - vertex(n0 + k)).norm();
     for (int k = 0; k < n; ++k)
@@ -147,85 +150,181 @@ Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const
     return g;
 }
 
-// Section 2.3: every vertex of a shell against every element of the other shells (sphero-segments). A
-// contact with an element end (branches a < 0, a > l of Fig. 4) is a vertex-vertex contact; it is counted
-// once, with the element that starts at that end (or, for the last vertex of an open shell, that ends there).
-void ShellModel::contact_forces(double dt)
+// Contact candidates (decision spd-contact-detection): a vertex c within r_i + r_j of an element AB of length
+// l is within sqrt((r_i + r_j)^2 + (l/2)^2) of A or B. A Verlet list of all vertices
+// (core/neighbour_list.hpp: cell list with a skin) with that cutoff, l bounded by L + skin (L the longest
+// deformable element at the build, each end moving less than skin/2 before the next one), therefore lists a
+// vertex of every element it can touch; its candidates are the elements adjacent to its listed neighbours of
+// other shells. Rigid shells (walls) have long elements: every free vertex is a candidate of every rigid
+// element (O(N) per wall). The candidates are rebuilt with the list only, O(N) at fixed density; friction
+// histories carry over.
+void ShellModel::update_contact_candidates()
 {
-    std::fill(contact_normal_.begin(), contact_normal_.end(), 0.0);
-    contact_force_.setZero();
-    if (contact_.k_n == 0.0) return;
-    std::map<std::pair<int, int>, double> friction;
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& sp = shells_[p];
-        for (std::size_t q = 0; q < shells_.size(); ++q) {
-            const Shell& sq = shells_[q];
-            if (p == q || (sp.rigid && sq.rigid)) continue;
-            const double reach = sp.radius + sq.radius;
-            for (int i = sp.first; i < sp.first + sp.count; ++i) {
-                const Vec2 c = vertex(i);
-                for (int k = 0; k < sq.elements(); ++k) {
-                    const int a = sq.first + k, b = next(sq, k);
-                    const Vec2 A = vertex(a), B = vertex(b);
-                    // Bounding box of the sphero-segment: a cheap rejection before the exact distance.
-                    if (c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
-                        c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach)
-                        continue;
-                    const SegmentProximity prox = point_segment_proximity(c, A, B);
-                    if (prox.distance >= reach) continue;
-                    // The sphero-segment law holds while the vertex centre stays on its side of the element:
-                    // at distance 0 the normal flips and the vertex tunnels through (a wall cannot hold it).
-                    if (prox.distance < 0.05 * reach) {
-                        std::ostringstream cause;
-                        cause << "contact overlap " << reach - prox.distance
-                              << " m above 95% of r_i + r_j = " << reach << " m (vertex " << i
-                              << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
-                              << " N/m can hold before the vertex crosses the element; use more nodes (more "
-                                 "contact "
-                                 "vertices share the load) or a stiffer contact";
-                        throw NumericalError("contact overlap", steps_, cause.str());
-                    }
-                    const bool last_end = !sq.closed && k == sq.elements() - 1;
-                    if (prox.branch == SegmentBranch::end_b && !last_end)
-                        continue; // counted with element k+1
-                    const auto w = transfer_weights(std::clamp(prox.a, 0.0, prox.length), prox.length);
-                    const Vec2 v_rel =
-                        v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
-                    const double fn = std::max(0.0, normal_contact_force(contact_.k_n, prox.distance, reach) -
-                                                        contact_.normal_damping * v_rel.dot(prox.normal));
-                    Vec2 F = fn * prox.normal;
-                    if (contact_.mu > 0) {
-                        const Vec2 t(prox.normal.y(), -prox.normal.x()); // t = n x z (section 2.3)
-                        const auto key = std::make_pair(i, a);
-                        const auto old = friction_.find(key);
-                        const double ft =
-                            coulomb_friction_update(old == friction_.end() ? 0.0 : old->second, contact_.k_t,
-                                                    v_rel.dot(t) * dt, contact_.mu, fn);
-                        friction[key] = ft;
-                        F += ft * t;
-                    }
-                    contact_force_.segment<2>(2 * i) += F;
-                    contact_force_.segment<2>(2 * a) -= w[0] * F;
-                    contact_force_.segment<2>(2 * b) -= w[1] * F;
-                    contact_normal_[i] += fn;
-                }
-            }
-        }
+    double r_all = 0, r_free = 0;
+    for (const Shell& s : shells_) {
+        r_all = std::max(r_all, s.radius);
+        if (!s.rigid) r_free = std::max(r_free, s.radius);
     }
-    friction_.swap(friction); // contacts that opened lose their history
+    const double reach = r_all + r_free;
+    const auto longest_element = [&] {
+        double L = 0;
+        for (const Shell& s : shells_)
+            if (!s.rigid)
+                for (int k = 0; k < s.elements(); ++k)
+                    L = std::max(L, (vertex(next(s, k)) - vertex(s.first + k)).norm());
+        return L;
+    };
+    const Eigen::Map<const Points<2>> positions(x_.data(), 2, vertices());
+    const auto make_list = [&](double L) {
+        list_length_ = 1.25 * L; // headroom: element growth up to 25% keeps the list
+        const double skin = std::max(reach, 0.5 * list_length_);
+        const double l_bound = list_length_ + skin;
+        neighbours_.emplace(std::sqrt(reach * reach + 0.25 * l_bound * l_bound), skin);
+    };
+    if (!neighbours_) make_list(longest_element());
+    if (!neighbours_->update(positions)) return;
+    if (const double L = longest_element(); L > list_length_) { // an element outgrew the cutoff's bound
+        make_list(L);
+        neighbours_->update(positions);
+    }
+    ++list_builds_;
+
+    std::vector<Candidate> fresh;
+    const auto add_adjacent_elements = [&](int i, int j) { // elements of shell_of(j) that end at j
+        const Shell& s = shells_[shell_of(j)];
+        const int local = j - s.first;
+        if (local < s.elements()) fresh.push_back({i, j, next(s, local)});
+        if (s.closed || local > 0) {
+            const int before = prev(s, local);
+            fresh.push_back({i, before, j});
+        }
+    };
+    for (const auto& [i, j] : neighbours_->pairs()) {
+        const Shell &si = shells_[shell_of(i)], &sj = shells_[shell_of(j)];
+        if (shell_of(i) == shell_of(j) || (si.rigid && sj.rigid)) continue;
+        if (!sj.rigid) add_adjacent_elements(i, j);
+        if (!si.rigid) add_adjacent_elements(j, i);
+    }
+    for (const Shell& wall : shells_) {
+        if (!wall.rigid) continue;
+        for (const Shell& s : shells_)
+            if (!s.rigid)
+                for (int i = s.first; i < s.first + s.count; ++i)
+                    for (int k = 0; k < wall.elements(); ++k)
+                        fresh.push_back({i, wall.first + k, next(wall, k)});
+    }
+    const auto key = [](const Candidate& c) { return std::make_pair(c.vertex, c.a); };
+    std::sort(fresh.begin(), fresh.end(),
+              [&](const Candidate& u, const Candidate& w) { return key(u) < key(w); });
+    fresh.erase(std::unique(fresh.begin(), fresh.end(),
+                            [&](const Candidate& u, const Candidate& w) { return key(u) == key(w); }),
+                fresh.end());
+    // Both lists are sorted: carry the friction history of pairs that stay candidates.
+    auto old = candidates_.begin();
+    for (Candidate& c : fresh) {
+        while (old != candidates_.end() && key(*old) < key(c))
+            ++old;
+        if (old != candidates_.end() && key(*old) == key(c)) c.friction = old->friction;
+    }
+    candidates_.swap(fresh);
+}
+
+// Section 2.3: one vertex against one element of another shell (a sphero-segment), written into the
+// candidate's record. A contact with an element end (branches a < 0, a > l of Fig. 4) is a vertex-vertex
+// contact; it is counted once, with the element that starts at that end (or, for the last vertex of an open
+// shell, that ends there).
+void ShellModel::evaluate_contact(Candidate& cand, double dt) const
+{
+    cand.active = cand.overlap = false;
+    const int i = cand.vertex, a = cand.a, b = cand.b;
+    const Shell &sp = shells_[shell_of(i)], &sq = shells_[shell_of(a)];
+    const double reach = sp.radius + sq.radius;
+    const Vec2 c = vertex(i), A = vertex(a), B = vertex(b);
+    const double old_friction = cand.friction;
+    cand.friction = 0; // a contact that opened loses its history
+    // Bounding box of the sphero-segment: a cheap rejection before the exact distance.
+    if (c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
+        c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach)
+        return;
+    const SegmentProximity prox = point_segment_proximity(c, A, B);
+    if (prox.distance >= reach) return;
+    // The sphero-segment law holds while the vertex centre stays on its side of the element: at distance
+    // 0 the normal flips and the vertex tunnels through (a wall cannot hold it).
+    if (prox.distance < 0.05 * reach) {
+        cand.overlap = true;
+        return;
+    }
+    const bool last_end = !sq.closed && b == sq.first + sq.count - 1;
+    if (prox.branch == SegmentBranch::end_b && !last_end) return; // counted with the next element
+    const auto w = transfer_weights(std::clamp(prox.a, 0.0, prox.length), prox.length);
+    const Vec2 v_rel = v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
+    const double fn = std::max(0.0, normal_contact_force(contact_.k_n, prox.distance, reach) -
+                                        contact_.normal_damping * v_rel.dot(prox.normal));
+    Vec2 F = fn * prox.normal;
+    if (contact_.mu > 0) {
+        const Vec2 t(prox.normal.y(), -prox.normal.x()); // t = n x z (section 2.3)
+        cand.friction =
+            coulomb_friction_update(old_friction, contact_.k_t, v_rel.dot(t) * dt, contact_.mu, fn);
+        F += cand.friction * t;
+    }
+    cand.active = true;
+    cand.fn = fn;
+    cand.w_a = w[0];
+    cand.w_b = w[1];
+    cand.force = F;
+}
+
+// Adds the contacts of all candidates to the vertices in the fixed order of the candidates (vertex, element):
+// the forces do not depend on the number of threads that evaluated them, bit for bit.
+void ShellModel::gather_contact_forces()
+{
+    for (const Candidate& cand : candidates_) {
+        if (cand.overlap) {
+            const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
+            const double distance =
+                point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).distance;
+            std::ostringstream cause;
+            cause << "contact overlap " << reach - distance << " m above 95% of r_i + r_j = " << reach
+                  << " m (vertex " << cand.vertex << " of particle " << shell_of(cand.vertex)
+                  << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
+                  << " N/m can hold before the vertex crosses the element; use more nodes (more contact "
+                     "vertices share the load) or a stiffer contact";
+            throw NumericalError("contact overlap", steps_, cause.str());
+        }
+        if (!cand.active) continue;
+        contact_force_.segment<2>(2 * cand.vertex) += cand.force;
+        contact_force_.segment<2>(2 * cand.a) -= cand.w_a * cand.force;
+        contact_force_.segment<2>(2 * cand.b) -= cand.w_b * cand.force;
+        contact_normal_[cand.vertex] += cand.fn;
+    }
     f_ += contact_force_;
 }
 
 void ShellModel::compute_forces(double dt)
 {
     f_ = applied_;
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& s = shells_[p];
-        if (s.rigid) continue;
-        internal_forces(s);
-        if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(static_cast<int>(p));
+    const bool contacts = contact_.k_n > 0;
+    std::fill(contact_normal_.begin(), contact_normal_.end(), 0.0);
+    contact_force_.setZero();
+    if (contacts) update_contact_candidates();
+    // Each shell writes the forces of its own vertices only, each contact its own record: both loops run in
+    // one parallel region (worth it above a few thousand vertices), with results independent of the threads.
+    const int n_shells = static_cast<int>(shells_.size());
+    const long n_candidates = contacts ? static_cast<long>(candidates_.size()) : 0;
+#pragma omp parallel if (vertices() > 2000)
+    {
+#pragma omp for schedule(dynamic, 4) nowait
+        for (int p = 0; p < n_shells; ++p) {
+            const Shell& s = shells_[p];
+            if (s.rigid) continue;
+            internal_forces(s);
+            if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
+        }
+#pragma omp for schedule(static)
+        for (long m = 0; m < n_candidates; ++m)
+            evaluate_contact(candidates_[m], dt);
     }
-    contact_forces(dt);
+    if (contacts) gather_contact_forces();
 }
 
 void ShellModel::step(double dt, double damping)

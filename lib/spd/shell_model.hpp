@@ -9,6 +9,7 @@
 // evaluation from the change of geometry since the previous one.
 #pragma once
 
+#include "core/neighbour_list.hpp"
 #include "core/vector.hpp"
 #include "spd/calibration.hpp"
 
@@ -16,8 +17,7 @@
 
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <utility>
+#include <optional>
 #include <vector>
 
 namespace softgrain::spd {
@@ -121,6 +121,10 @@ class ShellModel
     void translate(int shell, const Vec2& displacement);
     std::int64_t steps() const { return steps_; }
     double min_vertex_mass() const; // over free vertices [kg]
+    // Contact detection cost (decision spd-contact-detection): (vertex, element) pairs checked per step, and
+    // rebuilds of the vertex neighbour list so far.
+    std::size_t contact_candidates() const { return candidates_.size(); }
+    int neighbour_list_builds() const { return list_builds_; }
 
   private:
     int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
@@ -131,7 +135,8 @@ class ShellModel
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
     // are xs (2 count entries): outward for a CCW polygon [m].
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
-    void contact_forces(double dt);
+    void update_contact_candidates();
+    int shell_of(int vertex) const { return shell_of_[vertex]; }
     void add_force(int i, const Vec2& F)
     {
         f_[2 * i] += F.x();
@@ -145,7 +150,23 @@ class ShellModel
     std::vector<double> angle_prev_, torque_; // per vertex: theta at last call, M
     std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
     std::vector<double> contact_normal_;                 // per vertex: normal contact force received [N]
-    std::map<std::pair<int, int>, double> friction_;     // (vertex, element first vertex) -> f_t [N], eq. (7)
+    std::vector<int> shell_of_;                          // per vertex
+    // A (vertex, element) pair that may touch: the element (a, b) of another shell. It keeps the tangential
+    // force f_t of eq. (7) [N] (0 while the pair is not in contact) and, per step, the contact it carries.
+    struct Candidate
+    {
+        int vertex, a, b;
+        double friction = 0;
+        bool active = false, overlap = false; // in contact; overlap beyond 95% of r_i + r_j (exit 3)
+        double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
+        Vec2 force = Vec2::Zero();            // force on the vertex [N]
+    };
+    std::vector<Candidate> candidates_; // sorted by (vertex, a)
+    std::optional<NeighbourList<2>> neighbours_;
+    double list_length_ = 0; // element length bound L of the list's cutoff [m]
+    int list_builds_ = 0;
+    void evaluate_contact(Candidate& candidate, double dt) const;
+    void gather_contact_forces();
     ContactLaw contact_;
     std::int64_t steps_ = 0;
 };

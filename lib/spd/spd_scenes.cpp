@@ -377,6 +377,7 @@ void register_spd_scenes(SceneRegistry& registry)
                 .positive(),
         }),
         run_ring_compression});
+    register_spd_assembly_scenes(registry);
 }
 
 } // namespace softgrain

@@ -1,8 +1,10 @@
-// Scenes of the SPD method (Trivino et al.): spd.beam, spd.ring_pressure, spd.ring_compression.
+// Scenes of the SPD method (Trivino et al.): spd.beam, spd.ring_pressure, spd.ring_compression;
+// assemblies (section 5, assembly_scenes.cpp): spd.bench.
 #pragma once
 
 #include "core/scene.hpp"
 
 namespace softgrain {
 void register_spd_scenes(SceneRegistry& registry);
-}
+void register_spd_assembly_scenes(SceneRegistry& registry);
+} // namespace softgrain

@@ -1,0 +1,39 @@
+// SPD assemblies (Trivino et al., section 5): many core-shell rings in a rectangular box of rigid walls.
+#pragma once
+
+#include "spd/ring.hpp"
+#include "spd/shell_model.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace softgrain::spd {
+
+// The rings share the shell material, eta, M^Y/M*, nodes per ring and vertex mass of `ring` (ring.radius is
+// the mean radius R); radii are R (1 + spread g), g a standard normal truncated at |g| < 2 (decision
+// spd-polydispersity), drawn from `seed`.
+struct AssemblySetup
+{
+    int particles = 100;
+    RingSetup ring;
+    double radius_spread = 0; // Delta R / R (standard deviation)
+    std::uint64_t seed = 1;
+};
+
+// Rings on a square lattice of pitch 2 (R_max + r) (neighbours touching), `columns` wide, inside a box of
+// four rigid walls (radius 0) touching the outer rings. Contact law of the ring scenes (decisions
+// spd-ring-walls, spd-contact-damping): k_n = k_s, frictionless, normal damping 2 sqrt(m k_n).
+struct Assembly
+{
+    ShellModel model;
+    std::vector<int> particles; // shell index of each ring
+    std::vector<double> radii;  // initial radius of each ring [m]
+    int bottom = 0, top = 0, left = 0, right = 0;
+    double width = 0, height = 0; // inner box size between the wall lines [m]
+};
+Assembly rings_in_box(const AssemblySetup& setup, int columns);
+
+// Free (non-rigid) vertices of the assembly.
+int particle_vertices(const Assembly& assembly);
+
+} // namespace softgrain::spd
