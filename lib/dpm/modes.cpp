@@ -36,13 +36,14 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
         options);
 }
 
-double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)
+double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
+                     int max_steps)
 {
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
     for (int step = 0; step < max_steps; ++step) {
         g.setZero();
         Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
-        total_energy(system, x, &g, &m);
+        energy(x, &g, &m);
         if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
         const Eigen::VectorXd& lambda = solver.eigenvalues();
@@ -54,8 +55,15 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
         x -= solver.eigenvectors() * step_in_modes;
     }
     g.setZero();
-    total_energy(system, x, &g, nullptr);
+    energy(x, &g, nullptr);
     return g.cwiseAbs().maxCoeff();
+}
+
+double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)
+{
+    return polish_newton([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                   Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
+                         x, force_tolerance, max_steps);
 }
 
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,

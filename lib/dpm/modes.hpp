@@ -10,6 +10,8 @@
 #include "core/fire.hpp"
 #include "dpm/system.hpp"
 
+#include <functional>
+
 namespace softgrain::dpm {
 
 struct ModeSpectrum
@@ -28,9 +30,16 @@ int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
 // FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);
 
-// Newton steps x -= M^+ grad U (pseudo-inverse over eigenvalues above `zero` times the largest) until the
+// energy(x, gradient, hessian): the value, adding the gradient and the Hessian when they are not null.
+using EnergyWithDerivatives =
+    std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*, Eigen::MatrixXd*)>;
+
+// Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until the
 // largest force component is below force_tolerance or `max_steps` is reached; returns that force.
 // Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles).
+double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
+                     int max_steps);
+// The same on the total energy of a 2D system.
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
 
 // U(x + amplitude e) - U(x).

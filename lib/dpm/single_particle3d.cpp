@@ -3,34 +3,11 @@
 #include "core/errors.hpp"
 #include "core/fire.hpp"
 #include "core/rng.hpp"
+#include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
 
 namespace softgrain::dpm {
-
-double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
-                     int max_steps)
-{
-    const auto n = x.size();
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
-    for (int step = 0; step < max_steps; ++step) {
-        g.setZero();
-        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
-        energy(x, &g, &m);
-        if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
-        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
-        const Eigen::VectorXd& lambda = solver.eigenvalues();
-        const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
-        const Eigen::VectorXd projected = solver.eigenvectors().transpose() * g;
-        Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(n);
-        for (Eigen::Index k = 0; k < n; ++k)
-            if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
-        x -= solver.eigenvectors() * step_in_modes;
-    }
-    g.setZero();
-    energy(x, &g, nullptr);
-    return g.cwiseAbs().maxCoeff();
-}
 
 SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleMesh& mesh,
                                                std::optional<double> A0, const Stiffness3d& k,

@@ -16,20 +16,9 @@
 #include "dpm/shape_energy3d.hpp"
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 
 namespace softgrain::dpm {
-
-// energy(x, gradient, hessian): the value, adding the gradient and the Hessian when they are not null.
-using EnergyWithDerivatives =
-    std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*, Eigen::MatrixXd*)>;
-
-// Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until
-// the largest gradient component is below force_tolerance or max_steps are done; returns that component.
-// From a FIRE-relaxed state it converges quadratically, also on manifolds of minima (floppy particles).
-double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
-                     int max_steps);
 
 struct Stiffness3d
 {
