@@ -1,14 +1,12 @@
 // The `softgrain` command-line contract (DESIGN.md): list, describe, run; exit codes 0 / 2 / 3; bad input
 // names the key, the value and what is allowed; nothing half-written is left behind.
 #include "core/scene.hpp"
+#include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -17,24 +15,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome
-{
-    int exit_code;
-    std::string output; // stdout and stderr
-};
-
-Outcome run_softgrain(const std::string& arguments)
-{
-    const std::string command = std::string(SOFTGRAIN_EXECUTABLE) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::string output;
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe))
-        output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using softgrain::verification::Outcome;
+using softgrain::verification::run_softgrain;
 
 fs::path scratch_directory(const std::string& name)
 {

@@ -3,13 +3,11 @@
 // contact, 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.828 dt_c; a larger dt stops the run with exit 3 naming the limit.
 #include "core/errors.hpp"
 #include "spd/ring.hpp"
+#include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 using namespace softgrain;
 using namespace softgrain::spd;
@@ -111,17 +109,10 @@ TEST_CASE("a time step above the stability limit stops the run with exit 3 namin
     setup.dt_factor = 0.9;
     CHECK_THROWS_WITH_AS(ring_compression(setup, 0.1, 0.05, false, 1e-4, [](double) {}),
                          doctest::Contains("above the stability limit"), NumericalError);
-    const std::string command = std::string(SOFTGRAIN_EXECUTABLE) +
-                                " run spd.ring_compression --set dt_factor=0.9 --set nodes=32 "
-                                "--out /tmp/softgrain-spd-stability --quiet 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::string output;
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe))
-        output += buffer.data();
-    const int status = pclose(pipe);
-    CHECK(WEXITSTATUS(status) == exit_numerical_failure);
+    const auto [exit_code, output] =
+        verification::run_softgrain("run spd.ring_compression --set dt_factor=0.9 --set nodes=32 --out "
+                                    "/tmp/softgrain-spd-stability --quiet");
+    CHECK(exit_code == exit_numerical_failure);
     CAPTURE(output);
     CHECK(output.find("0.828") != std::string::npos); // the limit, in units of dt_c
 }
