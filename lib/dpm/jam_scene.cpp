@@ -11,7 +11,7 @@
 
 namespace softgrain::dpm {
 
-void run_jam(const Parameters& p, RunContext& context)
+JamOptions jam_options(const Parameters& p)
 {
     JamOptions o;
     o.model = p.choice("model");
@@ -24,6 +24,12 @@ void run_jam(const Parameters& p, RunContext& context)
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     o.A0_floppy = p.real("A0_floppy");
     o.kl_surface = p.real("kl_surface");
+    return o;
+}
+
+void run_jam(const Parameters& p, RunContext& context)
+{
+    const JamOptions o = jam_options(p);
     context.record_seed(o.seed);
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/parameters.hpp"
+#include "dpm/jam.hpp"
 
 #include <vector>
 
@@ -13,5 +14,7 @@ namespace softgrain::dpm {
 
 void run_jam(const Parameters& p, RunContext& context);
 std::vector<ParameterSpec> jam_parameters();
+// The jamming protocol's options from the parameters of jam_parameters() (also dpm.shear_modulus's).
+JamOptions jam_options(const Parameters& p);
 
 } // namespace softgrain::dpm

@@ -49,21 +49,12 @@ Member member(const JamOptions& o, double dgamma, int steps, double force_tolera
 
 void run_shear_modulus(const Parameters& p, RunContext& context)
 {
-    JamOptions o;
-    o.model = p.choice("model");
+    const JamOptions o = jam_options(p);
     if (o.model == "rough_disk")
         throw InputError(
             "model = 'rough_disk': dpm.shear_modulus minimises over vertex coordinates; rigid "
             "polygons are not supported (allowed: smooth_disk | shell | floppy | surface_tension)");
-    o.particles = static_cast<int>(p.integer("particles"));
-    o.nodes_small = static_cast<int>(p.integer("nodes_small"));
-    o.nodes_large = static_cast<int>(p.integer("nodes_large"));
-    o.pressure_onset = p.real("pressure_onset");
-    o.pressure_max = p.real("pressure_max");
-    o.pressures = static_cast<int>(p.integer("pressures"));
-    o.A0_floppy = p.real("A0_floppy");
-    o.kl_surface = p.real("kl_surface");
-    const auto first_seed = static_cast<std::uint64_t>(p.integer("seed"));
+    const std::uint64_t first_seed = o.seed;
     const int packings = static_cast<int>(p.integer("packings"));
     context.record_seed(first_seed);
     const double dgamma = p.real("strain_step");
