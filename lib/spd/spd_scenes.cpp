@@ -114,6 +114,41 @@ double fitted_slope(const std::vector<double>& x, const std::vector<double>& y)
     return c1;
 }
 
+// The loading state whose strain is nearest eps.
+const CompressionState& loading_state_nearest(const std::vector<CompressionState>& states, double eps)
+{
+    const CompressionState* best = nullptr;
+    for (const CompressionState& st : states)
+        if (st.loading && (!best || std::abs(st.strain - eps) < std::abs(best->strain - eps))) best = &st;
+    return *best;
+}
+
+// How the top-wall contact carries the force (Figs. 16, 18, 24): the pressure at the vertex nearest the
+// middle (0 if none lies within l0/2 of it), and the shares of the wall force on that vertex and on the two
+// outermost ones.
+struct ProfileShape
+{
+    double centre_pressure = 0, centre_share = NAN, edge_share = NAN;
+};
+
+ProfileShape profile_shape(const CompressionState& st, double l0)
+{
+    ProfileShape shape;
+    if (st.profile_x.empty()) return shape;
+    double total = 0, centre_distance = INFINITY;
+    for (std::size_t k = 0; k < st.profile_x.size(); ++k) {
+        total += st.profile_pressure[k];
+        if (std::abs(st.profile_x[k]) < centre_distance)
+            centre_distance = std::abs(st.profile_x[k]), shape.centre_pressure = st.profile_pressure[k];
+    }
+    if (centre_distance >= 0.5 * l0) shape.centre_pressure = 0;
+    const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
+    double edge = st.profile_pressure[lo - st.profile_x.begin()];
+    if (hi != lo) edge += st.profile_pressure[hi - st.profile_x.begin()];
+    if (total > 0) shape.centre_share = shape.centre_pressure / total, shape.edge_share = edge / total;
+    return shape;
+}
+
 void run_ring_compression(const Parameters& p, RunContext& ctx)
 {
     RingSetup setup = ring_setup(p);
@@ -230,22 +265,46 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     for (const CompressionState& st : r.states)
         if (st.loading) last = &st;
     s["strain_reached"] = last->strain;
-    // W_s/W_b at about half the largest strain, to show its growth; eq. (35) at the last loading state.
+    // W_s/W_b and V/V0 at about half the largest strain, to show their growth (Figs. 14, 19).
     for (const CompressionState& st : r.states)
-        if (st.loading && st.strain <= 0.5 * last->strain + 1e-9)
+        if (st.loading && st.strain <= 0.5 * last->strain + 1e-9) {
             s["Ws_over_Wb_mid"] = st.bending_energy > 0 ? st.stretch_energy / st.bending_energy : 0.0;
+            s["V_over_V0_mid"] = st.volume;
+        }
+    // The early regime (Fig. 16's first profile, eps = 0.1) and the first contact (Fig. 23: the curves of
+    // eta = 0 and inf compared at the same strain and, at small strain steps, the same L_c/l = 1).
+    {
+        const CompressionState& early = loading_state_nearest(r.states, 0.1);
+        const ProfileShape shape = profile_shape(early, l);
+        s["eps_early"] = early.strain;
+        s["contact_vertices_early"] = early.contact_vertices;
+        s["centre_pressure_over_pstar_early"] = shape.centre_pressure / sc.characteristic.p_star;
+        s["centre_force_share_early"] = or_null(shape.centre_share);
+        const auto first = std::find_if(r.states.begin(), r.states.end(), [](const CompressionState& st) {
+            return st.loading && st.contact_vertices > 0;
+        });
+        if (first != r.states.end()) {
+            s["eps_first_contact"] = first->strain;
+            s["Lc_over_l_first_contact"] = first->contact_vertices;
+            s["F_over_Fstar_first_contact"] = first->wall_force / F_star;
+        }
+    }
+    // Fig. 12: L_c/b0 where the paper puts the onset of faceting (eps = 0.25, L_c = 0.16 b0).
+    if (last->strain >= 0.25 - 1e-9)
+        s["Lc_over_b0_eps025"] = loading_state_nearest(r.states, 0.25).contact_length;
+    // Fig. 15: the paper's F/F* <= L_c/l at every point (eq. (31) as an upper bound).
+    {
+        double excess = -INFINITY;
+        for (std::size_t k = 0; k < lc_over_l.size(); ++k)
+            excess = std::max(excess, f_ratio[k] - lc_over_l[k]);
+        s["force_contact_excess_max"] = or_null(excess);
+    }
     // Shape of the late force growth (Fig. 25): relative second differences of F and of ln F over the
     // loading states nearest to 1/2, 3/4 and 1 of the largest strain; 0 for a linear law (F) or an
     // exponential law (ln F), -0.17 (ln F) for any power law F ~ eps^k over eps = 0.2, 0.3, 0.4.
     {
-        const auto nearest = [&](double eps) {
-            const CompressionState* best = nullptr;
-            for (const CompressionState& st : r.states)
-                if (st.loading && (!best || std::abs(st.strain - eps) < std::abs(best->strain - eps)))
-                    best = &st;
-            return best;
-        };
-        const CompressionState *a = nearest(0.5 * last->strain), *b = nearest(0.75 * last->strain);
+        const CompressionState *a = &loading_state_nearest(r.states, 0.5 * last->strain),
+                               *b = &loading_state_nearest(r.states, 0.75 * last->strain);
         const double Fa = a->wall_force, Fb = b->wall_force, Fc = last->wall_force;
         const bool positive = Fa > 0 && Fb > 0 && Fc > 0 && a != b && b != last;
         s["force_second_difference"] = or_null(positive ? (Fc - 2 * Fb + Fa) / (Fc - Fa) : NAN);
@@ -278,20 +337,9 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     }
     // How the wall force is carried at the last loading state: by the two outermost contact vertices
     // (the elastica: entirely, as two line loads at the edges of the flat) or by a plateau (the paper).
-    double edge = 0, total = 0, centre = 0, centre_distance = INFINITY;
-    for (std::size_t k = 0; k < last->profile_x.size(); ++k) {
-        total += last->profile_pressure[k];
-        if (std::abs(last->profile_x[k]) < centre_distance)
-            centre_distance = std::abs(last->profile_x[k]), centre = last->profile_pressure[k];
-    }
-    if (!last->profile_x.empty()) {
-        const auto [lo, hi] = std::minmax_element(last->profile_x.begin(), last->profile_x.end());
-        edge = last->profile_pressure[lo - last->profile_x.begin()];
-        if (hi != lo) edge += last->profile_pressure[hi - last->profile_x.begin()];
-    }
-    s["edge_force_fraction_final"] = or_null(total > 0 ? edge / total : NAN);
-    s["centre_pressure_over_pstar_final"] =
-        or_null(centre_distance < 0.5 * l ? centre / sc.characteristic.p_star : 0.0);
+    const ProfileShape final_shape = profile_shape(*last, l);
+    s["edge_force_fraction_final"] = or_null(final_shape.edge_share);
+    s["centre_pressure_over_pstar_final"] = final_shape.centre_pressure / sc.characteristic.p_star;
     if (elastica) {
         s["elastica_contact_length_slope"] = or_null(fitted_slope(eps_late, lc_late_elastica));
         s["elastica_volume_deviation_max"] = el_volume_deviation;

@@ -5,4 +5,4 @@ set logscale y
 set format y "10^{%T}"
 set key top left
 plot word(rundirs, 1).'/compression.dat' using (column("loading") == 1 ? column("eps") : NaN):"Ws_over_Wb" ls 1 with linespoints title "{/Symbol h} = 0", \
-     word(rundirs, 2).'/compression.dat' using (column("loading") == 1 ? column("eps") : NaN):"Ws_over_Wb" ls 2 with linespoints title "{/Symbol h} = {/Symbol \245} (10^5)"
+     word(rundirs, 2).'/compression.dat' using (column("loading") == 1 ? column("eps") : NaN):"Ws_over_Wb" ls 2 with linespoints title "{/Symbol h} = {/Symbol \245}"
