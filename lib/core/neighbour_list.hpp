@@ -26,6 +26,8 @@ class NeighbourList
     bool update(const Points<Dim>& positions);
     const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
     int builds() const { return builds_; }
+    double cutoff() const { return cutoff_; }
+    double skin() const { return skin_; }
     // Distance evaluations of the last build: the cost measure of a rebuild, O(N) at fixed density.
     long distance_evaluations() const { return distance_evaluations_; }
 

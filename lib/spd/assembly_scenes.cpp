@@ -53,6 +53,20 @@ void run_bench(const Parameters& p, RunContext& ctx)
     s["contact_candidates_per_vertex"] = static_cast<double>(a.model.contact_candidates()) / vertices;
     s["neighbour_list_builds"] = a.model.neighbour_list_builds();
     s["kinetic_energy_final"] = a.model.kinetic_energy();
+    // The assembly's geometry and laws, for an equivalent run in another code (scripts/bench-vs-lammps).
+    const RingScales sc = ring_scales(setup.ring);
+    s["ring_radius"] = setup.ring.radius;
+    s["vertex_radius"] = sc.radius_vertex;
+    s["vertex_mass"] = setup.ring.vertex_mass;
+    s["k_s"] = sc.laws.k_s;
+    s["k_b"] = sc.laws.k_b;
+    s["k_n"] = sc.laws.k_s; // contact stiffness of the ring scenes (rings_in_box)
+    s["dt"] = dt;
+    s["box_width"] = a.width;
+    s["box_height"] = a.height;
+    s["columns"] = columns;
+    s["speed"] = speed;
+    s["neighbour_skin"] = a.model.neighbour_skin();
 }
 
 } // namespace

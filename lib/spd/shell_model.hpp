@@ -125,6 +125,8 @@ class ShellModel
     // rebuilds of the vertex neighbour list so far.
     std::size_t contact_candidates() const { return candidates_.size(); }
     int neighbour_list_builds() const { return list_builds_; }
+    // Skin of the vertex neighbour list [m] (0 before the first step).
+    double neighbour_skin() const { return neighbours_ ? neighbours_->skin() : 0.0; }
 
   private:
     int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
