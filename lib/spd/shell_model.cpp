@@ -347,8 +347,13 @@ void ShellModel::step(double dt, double damping)
     }
     ++steps_;
     if (!x_.allFinite() || !v_.allFinite()) {
+        int bad = 0; // the first vertex with a non-finite position or velocity
+        while (std::isfinite(x_[2 * bad]) && std::isfinite(x_[2 * bad + 1]) && std::isfinite(v_[2 * bad]) &&
+               std::isfinite(v_[2 * bad + 1]))
+            ++bad;
         std::ostringstream cause;
-        cause << "time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
+        cause << "vertex " << bad << " of particle " << shell_of(bad)
+              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
               << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
     }

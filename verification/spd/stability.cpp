@@ -81,6 +81,32 @@ TEST_CASE("free shell: velocity Verlet is stable up to dt_c = sqrt(m/k_s) and no
     CHECK(free_ring_kinetic_energy_max(1.01, 20000) > 1e3 * 1e-6); // grows by (1.33)^steps: blow-up
 }
 
+TEST_CASE("a blow-up names the step, the first non-finite vertex and its particle [issue 4, reliability]")
+{
+    // Two rings; the second (particle 1, vertices 32-63) is perturbed and stepped above dt_c: it blows up
+    // first, while the unperturbed first ring stays exactly at rest.
+    RingSetup setup;
+    setup.nodes = 32;
+    ShellModel model;
+    add_ring(model, setup, 0.0);
+    const int second = add_ring(model, setup, 0.0);
+    model.translate(second, Vec2(3 * setup.radius, 0));
+    for (int i = 32; i < 64; ++i)
+        model.set_vertex(i, model.vertex(i) + 1e-6 * Vec2(std::sin(7.3 * i), std::cos(3.1 * i)));
+    model.compute_forces(0.0);
+    const double dt = 1.2 * model.critical_time_step();
+    std::string message;
+    try {
+        for (int n = 0; n < 1'000'000; ++n)
+            model.step(dt, 0.0);
+    } catch (const NumericalError& e) {
+        message = e.what();
+        CHECK(e.step > 0);
+    }
+    CHECK(message.find("of particle 1 first") != std::string::npos);
+    CHECK(message.find("dt/dt_c = 1.2") != std::string::npos);
+}
+
 TEST_CASE("ring between walls: the largest stable dt is the damped-contact limit 2 (sqrt 2 - 1) dt_c "
           "[SPD section 2.4, decision spd-stability-limit]")
 {
