@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace softgrain {
@@ -124,28 +125,37 @@ const CompressionState& loading_state_nearest(const std::vector<CompressionState
 }
 
 // How the top-wall contact carries the force (Figs. 16, 18, 24): the pressure at the vertex nearest the
-// middle (0 if none lies within l0/2 of it), and the shares of the wall force on that vertex and on the two
-// outermost ones.
+// middle (0 if none lies within l0/2 of it), and the shares of the wall force on that vertex, on the
+// outermost vertex at each edge, and on the edge zones (the outermost two at each edge: the discrete
+// lift-off spreads an edge line load of the elastica over the edge vertex and its neighbour).
 struct ProfileShape
 {
-    double centre_pressure = 0, centre_share = NAN, edge_share = NAN;
+    double centre_pressure = 0, centre_share = NAN, edge_share = NAN, edge_zone_share = NAN;
 };
 
 ProfileShape profile_shape(const CompressionState& st, double l0)
 {
     ProfileShape shape;
-    if (st.profile_x.empty()) return shape;
-    double total = 0, centre_distance = INFINITY;
-    for (std::size_t k = 0; k < st.profile_x.size(); ++k) {
-        total += st.profile_pressure[k];
-        if (std::abs(st.profile_x[k]) < centre_distance)
-            centre_distance = std::abs(st.profile_x[k]), shape.centre_pressure = st.profile_pressure[k];
+    const std::size_t n = st.profile_x.size();
+    if (n == 0) return shape;
+    std::vector<std::size_t> by_x(n);
+    std::iota(by_x.begin(), by_x.end(), 0);
+    std::sort(by_x.begin(), by_x.end(),
+              [&](std::size_t a, std::size_t b) { return st.profile_x[a] < st.profile_x[b]; });
+    const auto p = [&](std::size_t rank) { return st.profile_pressure[by_x[rank]]; };
+    double total = 0, centre_distance = INFINITY, edge = 0, edge_zone = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        total += p(k);
+        const std::size_t from_edge = std::min(k, n - 1 - k);
+        edge += from_edge == 0 ? p(k) : 0.0;
+        edge_zone += from_edge <= 1 ? p(k) : 0.0;
+        if (std::abs(st.profile_x[by_x[k]]) < centre_distance)
+            centre_distance = std::abs(st.profile_x[by_x[k]]), shape.centre_pressure = p(k);
     }
     if (centre_distance >= 0.5 * l0) shape.centre_pressure = 0;
-    const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
-    double edge = st.profile_pressure[lo - st.profile_x.begin()];
-    if (hi != lo) edge += st.profile_pressure[hi - st.profile_x.begin()];
-    if (total > 0) shape.centre_share = shape.centre_pressure / total, shape.edge_share = edge / total;
+    if (total > 0)
+        shape.centre_share = shape.centre_pressure / total, shape.edge_share = edge / total,
+        shape.edge_zone_share = edge_zone / total;
     return shape;
 }
 
@@ -339,6 +349,7 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     // (the elastica: entirely, as two line loads at the edges of the flat) or by a plateau (the paper).
     const ProfileShape final_shape = profile_shape(*last, l);
     s["edge_force_fraction_final"] = or_null(final_shape.edge_share);
+    s["edge_zone_force_fraction_final"] = or_null(final_shape.edge_zone_share);
     s["centre_pressure_over_pstar_final"] = final_shape.centre_pressure / sc.characteristic.p_star;
     if (elastica) {
         s["elastica_contact_length_slope"] = or_null(fitted_slope(eps_late, lc_late_elastica));
