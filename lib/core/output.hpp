@@ -22,6 +22,12 @@
 
 namespace softgrain {
 
+// Wall-clock seconds since `start`: costs reported in summaries and benchmarks, never asserted.
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string software_version();
 
 struct Column

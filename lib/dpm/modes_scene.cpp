@@ -40,7 +40,9 @@ nlohmann::json median_or_null(std::vector<double> values)
 int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double threshold,
                    RunContext& context)
 {
-    const ModeSpectrum modes = vibrational_modes(system, x);
+    const auto started = std::chrono::steady_clock::now();
+    const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
+    const double spectrum_seconds = seconds_since(started);
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
     const int zero = count_zero_modes(lambda, threshold);
 
@@ -74,6 +76,8 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
 
     auto& s = context.summary();
     s["zero_modes"] = zero;
+    s["degrees_of_freedom"] = x.size();
+    s["spectrum_seconds"] = spectrum_seconds; // cost chart (dpm-cost), reported, never asserted
     s["lambda_smallest_nonzero"] =
         zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
     s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
@@ -97,7 +101,9 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     o.pressures = 0;
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     context.record_seed(o.seed);
+    const auto started = std::chrono::steady_clock::now();
     const JamResult r = jam(o);
+    const double jam_seconds = seconds_since(started);
     context.count_steps(r.fire_iterations);
     const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
     // Rattlers: particles without any contact; each carries 3 zero modes (2 translations, 1 rotation).
@@ -108,6 +114,8 @@ void run_packing_modes(const Parameters& p, RunContext& context)
         rattlers += contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0);
     auto& s = context.summary();
     s["rattlers"] = rattlers;
+    s["jam_seconds"] = jam_seconds;
+    s["fire_iterations"] = r.fire_iterations;
     s["zero_modes_without_rattlers"] = zero - 3 * rattlers;
     s["pressure_reached"] = r.states.back().pressure;
     s["phi"] = r.states.back().phi;

@@ -85,8 +85,7 @@ void run_approach(const Parameters& p, RunContext& ctx)
     for (long long r = 0; r < p.integer("timing_repeats"); ++r) {
         const auto start = std::chrono::steady_clock::now();
         run = integrate_approach(problem, settings);
-        seconds = std::min(seconds,
-                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds = std::min(seconds, seconds_since(start));
     }
     ctx.count_steps(run.steps);
     const ApproachAnalysis an = analyse_approach(problem, run.samples, p.real("regime_width"));

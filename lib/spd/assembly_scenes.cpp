@@ -42,7 +42,7 @@ void run_bench(const Parameters& p, RunContext& ctx)
     const auto start = std::chrono::steady_clock::now();
     for (long n = 1; n < steps; ++n)
         a.model.step(dt, 0.0);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     ctx.count_steps(steps);
     const int vertices = particle_vertices(a);
     auto& s = ctx.summary();

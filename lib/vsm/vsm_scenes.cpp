@@ -128,7 +128,7 @@ void run_swinging_cube_scene(const Parameters& p, RunContext& context)
             history.row({e.t, e.l2, e.boundary_layer, e.interior, e.mode_amplitude, e.residual});
         },
         static_cast<int>(p.integer("history_samples")));
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double wall = seconds_since(start);
     context.count_steps(r.steps);
     auto& particles = context.table("particles.dat", {{"X1", "m", "reference position"},
                                                       {"X2", "m", ""},
@@ -194,7 +194,7 @@ void run_l_block_scene(const Parameters& p, RunContext& context)
     };
     const auto start = std::chrono::steady_clock::now();
     const LBlockResult r = run_l_block(s, 10, observe);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double wall = seconds_since(start);
     progress.finish();
     context.count_steps(r.steps);
     auto& out = context.summary();
