@@ -33,7 +33,7 @@ void register_dpm_scenes(SceneRegistry& registry)
         Scene{"dpm.jam",
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
               "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
-              dpm::jam_parameters(), dpm::run_jam});
+              dpm::jam_scene_parameters(), dpm::run_jam});
     registry.add(
         Scene{"dpm.compress2d",
               "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two plates, "

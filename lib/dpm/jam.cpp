@@ -125,31 +125,40 @@ JamResult jam(const JamOptions& o)
     const double largest_step = 5e-3; // Delta L/L (decision dpm-jam-protocol)
     double step = largest_step;
     long step_index = 0;
-    for (double target : targets) {
+    // Section 9.4: change the box by the step and relax until 1 <= P/P_target < 1.01. Compressing, a step
+    // that overshoots the window is undone and halved; decompressing, one that undershoots it. Far from a
+    // target the step grows again, never beyond the first (decision dpm-jam-protocol; below onset the
+    // pressure is FIRE round-off and says nothing, so compression towards onset never grows it).
+    const auto reach = [&](double target, bool compressing) {
         long iterations = 0;
         for (;; ++step_index) {
             const double p = current_pressure();
             if (p >= target && p < 1.01 * target) break;
             if (step < 1e-15)
-                throw NumericalError("compression step below 1e-15 before 1 <= P/P_target < 1.01", step_index,
+                throw NumericalError("box step below 1e-15 before 1 <= P/P_target < 1.01", step_index,
                                      "a rearrangement makes the pressure jump over the window");
             const Eigen::VectorXd saved_x = out.x;
             const Eigen::Vector2d saved_box = *s.box;
-            scale_packing(s, out.x, 1.0 - step);
+            scale_packing(s, out.x, compressing ? 1.0 - step : 1.0 + step);
             iterations += relax(step_index);
             const double after = current_pressure();
-            if (after >= 1.01 * target) { // overshoot: back, halve (section 9.4)
+            if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
                 out.x = saved_x;
                 *s.box = saved_box;
                 step *= 0.5;
-            } else if (target > o.pressure_onset && after < 0.5 * target && after > 0) {
-                // Far below a target above onset: grow again, never beyond the first step (decision
-                // dpm-jam-protocol; before onset the pressure is FIRE round-off and says nothing).
+            } else if (compressing ? target > o.pressure_onset && after < 0.5 * target && after > 0
+                                   : after > 2 * target) {
                 step = std::min(2 * step, largest_step);
             }
         }
-        out.states.push_back({packing_fraction(s, out.x), current_pressure(), iterations, out.x, *s.box});
-    }
+        out.states.push_back(
+            {packing_fraction(s, out.x), current_pressure(), iterations, out.x, *s.box, !compressing});
+    };
+    for (double target : targets)
+        reach(target, true);
+    if (o.decompress)
+        for (auto t = targets.rbegin() + 1; t != targets.rend(); ++t)
+            reach(*t, false);
     return out;
 }
 

@@ -31,14 +31,16 @@ struct JamOptions
     double kl_surface =
         0.01; // surface-tension particles: k_l [k_c] (Table 9.1: ~0; decision dpm-jam-surface-kl)
     std::uint64_t seed = 1;
+    bool decompress = false; // after pressure_max, expand back down through the same targets (Fig. 9.13b-d)
 };
 
 struct JamState
 {
     double phi = 0, pressure = 0; // pressure in the model's unit
     long fire_iterations = 0;
-    Eigen::VectorXd x;     // the relaxed configuration at this pressure
-    Eigen::Vector2d box{}; // and its box
+    Eigen::VectorXd x;          // the relaxed configuration at this pressure
+    Eigen::Vector2d box{};      // and its box
+    bool decompression = false; // reached by expanding from pressure_max
 };
 
 struct JamResult

@@ -29,18 +29,20 @@ JamOptions jam_options(const Parameters& p)
 
 void run_jam(const Parameters& p, RunContext& context)
 {
-    const JamOptions o = jam_options(p);
+    JamOptions o = jam_options(p);
+    o.decompress = p.boolean("decompress");
     context.record_seed(o.seed);
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);
     const double phi_c = r.states.front().phi;
     auto& table = context.table("pressure.dat", {{"phi", "1", "packing fraction (eq. 9.22 or disk area)"},
                                                  {"dphi", "1", "phi - phi_c"},
-                                                 {"P", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"}});
+                                                 {"P", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"},
+                                                 {"decompression", "1", "0 compression, 1 decompression"}});
     std::vector<double> dphi, pressure, log_dphi, log_p;
     for (const JamState& s : r.states) {
-        table.row({s.phi, s.phi - phi_c, s.pressure});
-        if (&s == &r.states.front()) continue;
+        table.row({s.phi, s.phi - phi_c, s.pressure, s.decompression ? 1.0 : 0.0});
+        if (&s == &r.states.front() || s.decompression) continue; // the fits: the compression branch
         dphi.push_back(s.phi - phi_c);
         pressure.push_back(s.pressure);
         log_dphi.push_back(std::log(s.phi - phi_c));
@@ -49,6 +51,15 @@ void run_jam(const Parameters& p, RunContext& context)
     auto& s = context.summary();
     s["phi_c"] = phi_c;
     s["states"] = r.states.size();
+    // Back at onset after decompression: a different phi_c means an irreversible rearrangement
+    // (Fig. 9.13b-d).
+    if (o.decompress) {
+        s["phi_c_decompression"] = r.states.back().phi;
+        s["phi_c_shift"] = r.states.back().phi - phi_c;
+    } else {
+        s["phi_c_decompression"] = nullptr;
+        s["phi_c_shift"] = nullptr;
+    }
     if (dphi.size() >= 2) {
         double b = 0, cov = 0, sumsq = 0;
         gsl_fit_mul(dphi.data(), 1, pressure.data(), 1, dphi.size(), &b, &cov, &sumsq); // P = B dphi
@@ -86,6 +97,15 @@ std::vector<ParameterSpec> jam_parameters()
             "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
             .non_negative(),
     };
+}
+
+std::vector<ParameterSpec> jam_scene_parameters()
+{
+    std::vector<ParameterSpec> specs = jam_parameters();
+    specs.push_back(ParameterSpec::boolean(
+        "decompress", false,
+        "after pressure_max, expand back through the same pressures to onset (Fig. 9.13b-d)"));
+    return specs;
 }
 
 } // namespace softgrain::dpm

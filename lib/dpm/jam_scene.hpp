@@ -14,6 +14,8 @@ namespace softgrain::dpm {
 
 void run_jam(const Parameters& p, RunContext& context);
 std::vector<ParameterSpec> jam_parameters();
+// dpm.jam's: jam_parameters() and `decompress`.
+std::vector<ParameterSpec> jam_scene_parameters();
 // The jamming protocol's options from the parameters of jam_parameters() (also dpm.shear_modulus's).
 JamOptions jam_options(const Parameters& p);
 
