@@ -90,7 +90,7 @@ void slump_forces(const DpmSystem& s, const SlumpWorld& world, const Eigen::Vect
                 floor_friction(px, normal, world.wall_friction, world.tangential_stiffness, floor.anchor[v]);
         else
             floor.anchor[v] = std::numeric_limits<double>::quiet_NaN();
-        force(2 * v) += left - right + tangential;
+        force(2 * v) += left - right + tangential + world.body_force_x;
         force(2 * v + 1) += normal;
         sum.left += left;
         sum.right -= right;

@@ -59,6 +59,7 @@ struct SlumpWorld
     double gravity = 0, wall_friction = 0, tangential_stiffness = 1, damping = 0;
     double right_wall = 0; // x of the right wall; +inf: removed
     bool left_wall = true;
+    double body_force_x = 0; // horizontal load on every vertex [k_c sigma] (tests of the floor law)
 };
 
 // Force on every vertex (without damping) at positions x; updates the floor springs; adds the wall forces.
