@@ -42,6 +42,7 @@ set ytics
 set autoscale
 set key top right
 set title "free surface after the run-out"
+set xtics 5
 set xlabel "x / D"
 set ylabel "height / D"
 plot rough."/profile.dat" using "x":"height" with points pt 7 lc rgb '#d62728' title "rough", \
