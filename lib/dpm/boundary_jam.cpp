@@ -67,6 +67,23 @@ double ellipse_aspect_for(int n, double A0)
 
 } // namespace
 
+Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& o)
+{
+    const double ring_radius = 2.5 + o.boundary_sigma; // [d]
+    if (o.ka > 0 && !(o.A0 >= minimum_shape_parameter(o.boundary_nodes)))
+        throw InputError("A0 = " + std::to_string(o.A0) + ": below A_min = " +
+                         std::to_string(minimum_shape_parameter(o.boundary_nodes)) + " of the ring");
+    const double aspect = o.ka > 0 ? ellipse_aspect_for(o.boundary_nodes, o.A0) : 1.0;
+    const Eigen::Matrix2Xd ring = ellipse_polygon(o.boundary_nodes, ring_radius, aspect);
+    const double edge = particle_perimeter(ring.reshaped(), 0, o.boundary_nodes) / o.boundary_nodes;
+    if (edge >= o.boundary_sigma)
+        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
+                         (o.ka > 0 ? " at A0 = " + std::to_string(o.A0) : std::string()) +
+                         ": ring vertices must overlap their neighbours (edge " + std::to_string(edge) +
+                         "); raise boundary_nodes or boundary_sigma, or lower A0");
+    return ring;
+}
+
 BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
 {
     const double pi = std::numbers::pi, d = 1.0, energy_target = 1e-8;
@@ -88,16 +105,9 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
             s.add_particle(Eigen::Matrix2Xd(c), d, ShapeParameters{}, x);
         }
     }
-    const double ring_radius = 2.5 * d + o.boundary_sigma;
+    const Eigen::Matrix2Xd ring_vertices = initial_boundary(o);
     ShapeParameters ring;
     ring.kl = o.kl;
-    // Floppy ring: a circle. With the area term (Fig. 9.18f): an ellipse of minor semi-axis ring_radius whose
-    // shape parameter is A0, so that the ring starts at zero shape energy around the disks.
-    if (o.ka > 0 && !(o.A0 >= minimum_shape_parameter(o.boundary_nodes)))
-        throw InputError("A0 = " + std::to_string(o.A0) + ": below A_min = " +
-                         std::to_string(minimum_shape_parameter(o.boundary_nodes)) + " of the ring");
-    const double aspect = o.ka > 0 ? ellipse_aspect_for(o.boundary_nodes, o.A0) : 1.0;
-    const Eigen::Matrix2Xd ring_vertices = ellipse_polygon(o.boundary_nodes, ring_radius, aspect);
     const Eigen::VectorXd ring_x = ring_vertices.reshaped();
     ring.l0 = particle_perimeter(ring_x, 0, o.boundary_nodes) / o.boundary_nodes;
     if (o.ka > 0) { // eq. (9.1) area term with a0 = (N_mu l0)^2/(4 pi A0)
@@ -105,10 +115,6 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
         ring.a0 = std::pow(o.boundary_nodes * ring.l0, 2) / (4 * pi * o.A0);
     }
     s.add_particle(ring_vertices, o.boundary_sigma, ring, x);
-    if (ring.l0 >= o.boundary_sigma)
-        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
-                         ": ring vertices must overlap their neighbours (edge " + std::to_string(ring.l0) +
-                         ")");
 
     FireOptions fire;
     // The area term's Hessian is k_a grad(a) grad(a)^T, |grad a|^2 ~ N_mu l0^2 (each vertex moves a by ~l0).

@@ -40,4 +40,9 @@ struct BoundaryJamResult
 
 BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& options);
 
+// The ring before shrinking: a circle of radius 2.5 d + boundary_sigma (ka = 0), or with ka > 0 the polygon
+// inscribed in an ellipse of that minor semi-axis whose shape parameter is A0 (zero shape energy at the
+// start). Refuses (InputError) A0 < A_min and a ring whose edges would exceed the vertex diameter.
+Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& options);
+
 } // namespace softgrain::dpm

@@ -77,6 +77,10 @@ void run_boundary_jam(const Parameters& p, RunContext& context)
         scan.clear();
         for (int k = 0; k < points; ++k)
             scan.push_back(points == 1 ? low : low + (high - low) * k / (points - 1));
+        for (const double A0 : {low, high}) { // refuse an infeasible scan before running it
+            o.A0 = A0;
+            initial_boundary(o);
+        }
     }
     auto& packings =
         context.table("packings.dat", {{"trial", "1", "trial k (seed + k), counted over the whole scan"},
@@ -133,10 +137,10 @@ std::vector<ParameterSpec> boundary_jam_parameters()
                             "area stiffness k_a of the boundary (eq. 9.1); 0: floppy (Fig. 9.18a-e), > 0: "
                             "fluid-filled boundary scanned over A0 (Fig. 9.18f)")
             .non_negative(),
-        ParameterSpec::real("A0_min", 1.02, "1", "ka > 0: first preferred shape parameter A0 of the boundary")
+        ParameterSpec::real("A0_min", 1.04, "1", "ka > 0: first preferred shape parameter A0 of the boundary")
             .at_least(1.0),
-        ParameterSpec::real("A0_max", 1.3, "1", "ka > 0: last A0 of the scan").at_least(1.0),
-        ParameterSpec::integer("A0_steps", 15, "1", "ka > 0: A0 values, equally spaced").at_least(1),
+        ParameterSpec::real("A0_max", 1.1, "1", "ka > 0: last A0 of the scan").at_least(1.0),
+        ParameterSpec::integer("A0_steps", 13, "1", "ka > 0: A0 values, equally spaced").at_least(1),
     };
 }
 
