@@ -140,7 +140,7 @@ std::vector<ParameterSpec> boundary_jam_parameters()
         ParameterSpec::real("A0_min", 1.04, "1", "ka > 0: first preferred shape parameter A0 of the boundary")
             .at_least(1.0),
         ParameterSpec::real("A0_max", 1.1, "1", "ka > 0: last A0 of the scan").at_least(1.0),
-        ParameterSpec::integer("A0_steps", 13, "1", "ka > 0: A0 values, equally spaced").at_least(1),
+        ParameterSpec::integer("A0_steps", 25, "1", "ka > 0: A0 values, equally spaced").at_least(1),
     };
 }
 
