@@ -42,7 +42,47 @@ double parallelogram_angle(const Eigen::VectorXd& x, const std::vector<std::pair
     return best;
 }
 
+// The N-gon inscribed in the ellipse of semi-axes (e r, r) at equal steps of the ellipse's parameter.
+Eigen::Matrix2Xd ellipse_polygon(int n, double r, double e)
+{
+    Eigen::Matrix2Xd v = regular_polygon(n, r, Eigen::Vector2d::Zero(), 0.0);
+    v.row(0) *= e;
+    return v;
+}
+
+// Aspect ratio e >= 1 at which that polygon has the shape parameter A = p^2/(4 pi a) = A0 (section 9.3.1);
+// A grows monotonically with e, so bisection on [1, 50] (A(50) ~ 8 exceeds any A0 of interest).
+double ellipse_aspect_for(int n, double A0)
+{
+    const auto A = [n](double e) {
+        const Eigen::VectorXd x = ellipse_polygon(n, 1.0, e).reshaped();
+        return shape_parameter(particle_perimeter(x, 0, n), particle_area(x, 0, n));
+    };
+    double low = 1, high = 50;
+    if (A(high) < A0) throw InputError("A0 = " + std::to_string(A0) + ": above the largest supported 8");
+    for (int k = 0; k < 60; ++k)
+        (A(0.5 * (low + high)) < A0 ? low : high) = 0.5 * (low + high);
+    return 0.5 * (low + high);
+}
+
 } // namespace
+
+Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& o)
+{
+    const double ring_radius = 2.5 + o.boundary_sigma; // [d]
+    if (o.ka > 0 && !(o.A0 >= minimum_shape_parameter(o.boundary_nodes)))
+        throw InputError("A0 = " + std::to_string(o.A0) + ": below A_min = " +
+                         std::to_string(minimum_shape_parameter(o.boundary_nodes)) + " of the ring");
+    const double aspect = o.ka > 0 ? ellipse_aspect_for(o.boundary_nodes, o.A0) : 1.0;
+    const Eigen::Matrix2Xd ring = ellipse_polygon(o.boundary_nodes, ring_radius, aspect);
+    const double edge = particle_perimeter(ring.reshaped(), 0, o.boundary_nodes) / o.boundary_nodes;
+    if (edge >= o.boundary_sigma)
+        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
+                         (o.ka > 0 ? " at A0 = " + std::to_string(o.A0) : std::string()) +
+                         ": ring vertices must overlap their neighbours (edge " + std::to_string(edge) +
+                         "); raise boundary_nodes or boundary_sigma, or lower A0");
+    return ring;
+}
 
 BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
 {
@@ -65,19 +105,21 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
             s.add_particle(Eigen::Matrix2Xd(c), d, ShapeParameters{}, x);
         }
     }
-    const double ring_radius = 2.5 * d + o.boundary_sigma;
+    const Eigen::Matrix2Xd ring_vertices = initial_boundary(o);
     ShapeParameters ring;
     ring.kl = o.kl;
-    ring.l0 = 2 * ring_radius * std::sin(pi / o.boundary_nodes);
-    s.add_particle(regular_polygon(o.boundary_nodes, ring_radius, Eigen::Vector2d::Zero(), 0.0),
-                   o.boundary_sigma, ring, x);
-    if (ring.l0 >= o.boundary_sigma)
-        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
-                         ": ring vertices must overlap their neighbours (edge " + std::to_string(ring.l0) +
-                         ")");
+    const Eigen::VectorXd ring_x = ring_vertices.reshaped();
+    ring.l0 = particle_perimeter(ring_x, 0, o.boundary_nodes) / o.boundary_nodes;
+    if (o.ka > 0) { // eq. (9.1) area term with a0 = (N_mu l0)^2/(4 pi A0)
+        ring.ka = o.ka;
+        ring.a0 = std::pow(o.boundary_nodes * ring.l0, 2) / (4 * pi * o.A0);
+    }
+    s.add_particle(ring_vertices, o.boundary_sigma, ring, x);
 
     FireOptions fire;
-    fire.dt_max = 0.3 / std::sqrt(std::max(4.0, 4 * o.kl));
+    // The area term's Hessian is k_a grad(a) grad(a)^T, |grad a|^2 ~ N_mu l0^2 (each vertex moves a by ~l0).
+    const double area_stiffness = o.ka * o.boundary_nodes * ring.l0 * ring.l0;
+    fire.dt_max = 0.3 / std::sqrt(std::max({4.0, 4 * o.kl, 2 * area_stiffness}));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-3 * std::sqrt(energy_target);
     double step = 1e-2; // relative shrink of l0
@@ -86,14 +128,15 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
             throw NumericalError("boundary jamming (energy " + std::to_string(out.energy) + ")", k,
                                  "the bisection on the ring's rest length did not bracket the target");
         const Eigen::VectorXd x_before = x;
-        const double l0_before = s.particles.back().shape.l0;
+        const ShapeParameters shape_before = s.particles.back().shape;
         s.particles.back().shape.l0 *= 1 - step;
+        s.particles.back().shape.a0 *= (1 - step) * (1 - step); // A0 unchanged
         const FireResult r = relax_fire(s, x, fire);
         out.iterations += r.iterations;
         if (!r.converged) throw NumericalError("FIRE in the boundary", k, "time step too large");
         if (r.energy > 2 * energy_target) { // overshoot: undo, halve
             x = x_before;
-            s.particles.back().shape.l0 = l0_before;
+            s.particles.back().shape = shape_before;
             step *= 0.5;
             continue;
         }

@@ -6,6 +6,9 @@
 // 2 U_t is undone and halved; jammed at U_t <= U < 2 U_t (U_t = 1e-8 k_c d^2), the protocol of section 9.4
 // with the energy in place of the pressure. The packing is described by its disk-disk contacts and by theta,
 // the smaller interior angle of the parallelogram formed by the four contacting disks.
+// Fig. 9.18(f): with ka > 0 the ring also carries the area term k_a/2 (a - a0)^2 of eq. (9.1) (a fluid-filled
+// boundary) with a0 = (N_mu l0)^2/(4 pi A0), so that its preferred shape parameter is A0; the ring then
+// shrinks with A0 fixed (l0 and sqrt(a0) scaled together).
 #pragma once
 
 #include "dpm/system.hpp"
@@ -20,6 +23,8 @@ struct BoundaryJamOptions
     int boundary_nodes = 100;
     double boundary_sigma = 0.25; // ring vertex diameter / disk diameter
     double kl = 1.0;              // ring edge stiffness / k_c
+    double ka = 0;                // ring area stiffness k_a [k_c / d^2]; 0: floppy boundary (Fig. 9.18a-e)
+    double A0 = 1.1;              // preferred shape parameter of the ring when ka > 0 (Fig. 9.18f)
     std::uint64_t seed = 1;
 };
 
@@ -34,5 +39,10 @@ struct BoundaryJamResult
 };
 
 BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& options);
+
+// The ring before shrinking: a circle of radius 2.5 d + boundary_sigma (ka = 0), or with ka > 0 the polygon
+// inscribed in an ellipse of that minor semi-axis whose shape parameter is A0 (zero shape energy at the
+// start). Refuses (InputError) A0 < A_min and a ring whose edges would exceed the vertex diameter.
+Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& options);
 
 } // namespace softgrain::dpm

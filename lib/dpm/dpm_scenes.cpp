@@ -7,9 +7,10 @@
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
+#include "dpm/scenes3d.hpp"
 #include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
-#include "dpm/scenes3d.hpp"
+#include "dpm/slump_scene.hpp"
 
 namespace softgrain {
 
@@ -59,6 +60,10 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
                        "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",
                        dpm::shear_modulus_parameters(), dpm::run_shear_modulus});
+    registry.add(Scene{"dpm.slump",
+                       "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
+                       "right wall removed; run-out, angle of repose, layers at the front",
+                       dpm::slump_parameters(), dpm::run_slump_scene});
 }
 
 } // namespace softgrain
