@@ -97,6 +97,9 @@ class ShellModel
     double area(int shell) const;  // polygon area [m^2], CCW positive
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
+    // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
+    // undrained core of eq. (4) (finite K_Omega > 0 only; an incompressible core stores none) [J].
+    double elastic_energy(int shell) const;
     // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
     // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
@@ -114,6 +117,16 @@ class ShellModel
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
     double hinge_torque(int vertex) const { return torque_[vertex]; }
 
+    // FIRE velocity mixing (Bitzek et al., PRL 97 (2006) 170201) over the free degrees of freedom:
+    // power() = F.v (damping excluded), mix_velocities(alpha): v <- (1 - alpha) v + alpha |v| F/|F|,
+    // stop(): v = 0.
+    double power() const;
+    void mix_velocities(double alpha);
+    void stop();
+    // Replaces the laws of a shell (e.g. switching plasticity on after an elastic deposition); the current
+    // forces and torques are kept and clamped by the new thresholds at the next force evaluation.
+    void set_laws(int shell, const ShellLaws& laws) { shells_[shell].laws = laws; }
+
     // Kinematic control of a rigid shell: sets the velocity of all its vertices.
     void set_velocity(int shell, const Vec2& velocity);
     // Moves one vertex (a prescribed configuration, e.g. for finite-difference checks of the forces).
@@ -130,6 +143,8 @@ class ShellModel
     int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
     int prev(const Shell& s, int local) const { return s.first + (local + s.count - 1) % s.count; }
     void internal_forces(const Shell& s);
+    double shell_stretch_energy(const Shell& s) const;
+    double shell_bending_energy(const Shell& s) const;
     void core_forces(int index);
     void step_constrained(double dt, double damping);
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
@@ -159,6 +174,7 @@ class ShellModel
         double friction = 0;
         bool active = false, overlap = false; // in contact; overlap beyond 95% of r_i + r_j (exit 3)
         double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
+        double distance = 0;                  // vertex-element distance while active [m]
         Vec2 force = Vec2::Zero();            // force on the vertex [N]
     };
     std::vector<Candidate> candidates_; // sorted by (vertex, a)
@@ -166,6 +182,7 @@ class ShellModel
     double list_length_ = 0; // element length bound L of the list's cutoff [m]
     int list_builds_ = 0;
     void evaluate_contact(Candidate& candidate, double dt) const;
+    void keep_nearest_elements();
     void gather_contact_forces();
     ContactLaw contact_;
     std::int64_t steps_ = 0;
@@ -176,5 +193,12 @@ class ShellModel
 // is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice.
 // Returns the number of steps taken.
 long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps);
+
+// The same rest criterion reached by FIRE instead of viscous damping: velocity-Verlet steps at the fixed,
+// stable dt (no time-step growth: dt is already at the stability limit) with the FIRE velocity mixing and
+// restarts, parameters of Bitzek et al. (N_min = 5, alpha_start = 0.1, f_alpha = 0.99). Converges on the
+// slow collective modes of a packing where a fixed damping tuned to one ring mode over- or under-damps.
+// Throws NumericalError if max_steps do not suffice. Returns the number of steps taken.
+long fire_relax(ShellModel& model, double dt, double force_tolerance, long max_steps);
 
 } // namespace softgrain::spd
