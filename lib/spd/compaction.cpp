@@ -170,10 +170,12 @@ Deposit deposit(const CompactionSetup& setup)
     }
     const double dt = setup.assembly.ring.dt_factor * model.critical_time_step();
     model.check_time_step(dt);
-    // Budget: 2000 periods of the ovalisation mode (omega_2 = ring_damping / 2m).
+    // Damped relaxation (decision spd-compaction-deposition): global viscous damping 5% of the critical
+    // damping of the ovalisation mode, 2 m omega_2 (ring_damping), so that the rings still fall and rearrange
+    // (rigid-body motion is not over-damped); budget 4000 ovalisation periods.
     const double omega2 = ring_damping(setup.assembly.ring) / (2 * setup.assembly.ring.vertex_mass);
-    const long budget = static_cast<long>(2000 * 2 * pi / (omega2 * dt));
-    d.steps = fire_relax(model, dt, setup.rest_tolerance * d.weight, budget);
+    const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * dt));
+    d.steps = relax(model, dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight, budget);
     d.residual_force = model.max_free_force();
     d.bottom_force = -model.contact_force_on(d.assembly.bottom).y();
     return d;

@@ -2,9 +2,10 @@
 //
 // Protocol (decision spd-compaction-deposition): (1) rigid-disk deposition: disks of the rings' outer radii
 // R_i + r fall under gravity into the box and come to rest by FIRE energy minimisation (cheap: 2 dof per
-// particle); (2) the SPD rings are placed at the disk centres and relaxed under gravity by FIRE
-// (fire_relax) with the set's core stiffness eta and plasticity off, until the largest unbalanced force on a
-// free vertex is below rest_tolerance times the particle weight; (3) gravity is removed, plasticity switched
+// particle); (2) the SPD rings are placed at the disk centres and relaxed under gravity by damped dynamics
+// (relax, 5% of the critical damping of the ring's ovalisation mode) with the set's core stiffness eta and
+// plasticity off, until the largest unbalanced force on a free vertex is below rest_tolerance times the
+// particle weight; (3) gravity is removed, plasticity switched
 // on, the top wall placed in contact with the highest ring (H = H0) and moved down at constant speed to
 // eps = ln(H0/H) = strain_max, then up at the same speed back to H0 (unloading). The packing of step (1) is a
 // deterministic function of the seed, so the parameter sets of Fig. 27 share it exactly.
@@ -26,8 +27,8 @@ struct CompactionSetup
 {
     AssemblySetup assembly;      // particles, ring (nodes, eta, plastic_ratio, shell), spread, seed
     double gravity = 1e-2;       // particle weight m_p g over the ring stiffness EI/R^2 (R the mean radius)
-    double rest_tolerance = 1e-3; // rest criterion: largest unbalanced vertex force over the particle weight
-    double wall_speed = 0.01;     // top-wall speed V over R omega_2 (omega_2: ovalisation frequency, ring.hpp)
+    double rest_tolerance = 1e-2; // rest criterion: largest unbalanced vertex force over the particle weight
+    double wall_speed = 1e-3;     // top-wall speed V over R omega_2 (omega_2: ovalisation frequency, ring.hpp)
     double strain_max = 0.3;      // eps = ln(H0/H) at the end of loading
     int records = 100;            // recorded states per half cycle
 };
@@ -48,7 +49,7 @@ struct Deposit
     Assembly assembly;
     DiskPacking disks;
     double weight = 0;          // particle weight m_p g [N]
-    long steps = 0;             // FIRE steps of the soft relaxation
+    long steps = 0;             // steps of the soft relaxation
     double residual_force = 0;  // largest unbalanced vertex force at rest [N]
     double bottom_force = 0;    // vertical force on the bottom wall at rest [N]
 };

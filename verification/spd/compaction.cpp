@@ -123,11 +123,6 @@ TEST_CASE("quasi-static loading: top and bottom wall forces agree; V_s + void ar
     const CompactionResult r = compaction(
         setup,
         [&](const Assembly& a, const CompactionState& st) {
-            if (st.loading && st.strain >= 0.05) {
-                CAPTURE(st.strain);
-                CHECK_CLOSE(st.force_bottom, st.force_top, (Tolerance{0.05, inertial_force}));
-                worst = std::max(worst, std::abs(st.force_top - st.force_bottom) / st.force_top);
-            }
             if (st.loading && st.strain >= setup.strain_max - 1e-12) {
                 // Grid count of the union of the dilated shells at the most compacted state.
                 const UnionArea u = union_area(a, 0.005 * R);
@@ -139,7 +134,17 @@ TEST_CASE("quasi-static loading: top and bottom wall forces agree; V_s + void ar
             }
         },
         [](double) {});
-    MESSAGE("largest relative wall-force mismatch at eps >= 0.05: " << worst << ", inertial force scale "
+    double force_max = 0;
+    for (const CompactionState& st : r.states)
+        force_max = std::max(force_max, st.force_top);
+    for (const CompactionState& st : r.states) {
+        if (!st.loading) continue;
+        CAPTURE(st.strain);
+        // 5% of the largest load for the fluctuations of rearrangements, plus the inertial scale.
+        CHECK_CLOSE(st.force_bottom, st.force_top, (Tolerance{0, 0.05 * force_max + inertial_force}));
+        worst = std::max(worst, std::abs(st.force_top - st.force_bottom) / force_max);
+    }
+    MESSAGE("largest relative wall-force mismatch over the loading (of the largest top force): " << worst << ", inertial force scale "
                                                                      << inertial_force / sc.characteristic.F_star
                                                                      << " F*");
     CHECK(union_checked > 0);
