@@ -84,6 +84,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     setup.rest_tolerance = p.real("rest_tolerance");
     setup.wall_speed = p.real("wall_speed");
     setup.strain_max = p.real("strain_max");
+    setup.stress_max = p.real("stress_max");
     ring.dt_factor = p.real("dt_factor");
     if (ring.material.h >= 0.5 * ring.radius)
         throw InputError("h = " + std::to_string(ring.material.h) +
@@ -105,7 +106,9 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     progress.finish();
     ctx.count_steps(r.steps + r.deposit.steps);
     const double W = r.width, A0 = r.solid_area0;
-    const auto void_ratio = [&](const CompactionState& st) { return (W * st.height - st.solid_area) / st.solid_area; };
+    const auto void_ratio = [&](const CompactionState& st) {
+        return (W * st.height - st.solid_area) / st.solid_area;
+    };
     const auto volume_share = [&](const CompactionState& st) {
         return st.height < r.height0 ? (A0 - st.solid_area) / (W * (r.height0 - st.height)) : NAN;
     };
@@ -122,13 +125,14 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     const CompactionState* end_of_loading = nullptr;
     double residual_strain = NAN, dVs_peak = 0, sigma_max = 0;
     for (const CompactionState& st : r.states) {
-        table.row({st.strain, st.loading ? 1.0 : 0.0, st.height / R, st.force_top / (W * s_depth) / sigma_star,
-                   st.force_bottom / (W * s_depth) / sigma_star, void_ratio(st), volume_share(st),
-                   st.kinetic_energy / (r.deposit.weight * R)});
+        table.row({st.strain, st.loading ? 1.0 : 0.0, st.height / R,
+                   st.force_top / (W * s_depth) / sigma_star, st.force_bottom / (W * s_depth) / sigma_star,
+                   void_ratio(st), volume_share(st), st.kinetic_energy / (r.deposit.weight * R)});
         if (st.loading) {
             end_of_loading = &st;
             sigma_max = std::max(sigma_max, st.force_top / (W * s_depth) / sigma_star);
-            if (std::isfinite(volume_share(st)) && st.strain >= 0.05) dVs_peak = std::max(dVs_peak, volume_share(st));
+            if (std::isfinite(volume_share(st)) && st.strain >= 0.05)
+                dVs_peak = std::max(dVs_peak, volume_share(st));
         } else if (std::isnan(residual_strain) && st.force_top <= 0) {
             residual_strain = st.strain; // the top wall leaves the sample
         }
@@ -156,7 +160,9 @@ void run_compaction(const Parameters& p, RunContext& ctx)
             const Vec2& x = r.snapshot[i][k % r.snapshot[i].size()];
             snapshot.row({double(i), x.x() / R, x.y() / R, r.snapshot_energy[i] / W_mean});
         }
-    const auto or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+    const auto or_null = [](double v) {
+        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    };
     auto& s = ctx.summary();
     const CompactionState& first = r.states.front();
     const CompactionState& last = r.states.back();
@@ -172,7 +178,8 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     s["dVs_over_dV_peak"] = dVs_peak;
     s["residual_strain"] = or_null(residual_strain);
     s["wall_force_mismatch_max"] = mismatch;
-    s["deposit_bottom_force_over_weight"] = r.deposit.bottom_force / (r.deposit.weight * setup.assembly.particles);
+    s["deposit_bottom_force_over_weight"] =
+        r.deposit.bottom_force / (r.deposit.weight * setup.assembly.particles);
     s["deposit_residual_over_particle_weight"] = r.deposit.residual_force / r.deposit.weight;
     s["deposit_steps"] = r.deposit.steps;
     s["disk_fire_iterations"] = r.deposit.disks.iterations;
@@ -206,7 +213,8 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
         {
             ParameterSpec::integer("particles", 40, "1", "number of rings (the paper: 500)").at_least(2),
             ParameterSpec::integer("nodes", 16, "1", "vertices per ring").at_least(8),
-            ParameterSpec::real("h", 0.1, "m", "shell thickness (2r = h; mean ring radius R = 1 m)").positive(),
+            ParameterSpec::real("h", 0.1, "m", "shell thickness (2r = h; mean ring radius R = 1 m)")
+                .positive(),
             ParameterSpec::real("radius_spread", 0.15, "1", "Delta R/R, standard deviation of the radii")
                 .non_negative()
                 .below(0.5),
@@ -217,17 +225,27 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             ParameterSpec::real("plastic_ratio", INFINITY, "1", "M_b^Y/M*, eq. (32); inf: elastic shells")
                 .positive()
                 .infinity_allowed(),
-            ParameterSpec::real("wall_speed", 1e-3, "R omega_2",
-                                "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
+            ParameterSpec::real(
+                "wall_speed", 1e-3, "R omega_2",
+                "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
                 .positive(),
-            ParameterSpec::real("strain_max", 0.3, "1", "largest vertical strain ln(H0/H)").positive().below(1.0),
-            ParameterSpec::real("gravity", 1e-2, "EI/R^2", "particle weight during the deposition").positive(),
+            ParameterSpec::real("strain_max", 0.3, "1", "largest vertical strain ln(H0/H)")
+                .positive()
+                .below(1.0),
+            ParameterSpec::real("stress_max", 50.0, "sigma*",
+                                "loading also ends when sigma reaches this (incompressible rings jam before "
+                                "eps = ln(V0/V_s))")
+                .positive()
+                .infinity_allowed(),
+            ParameterSpec::real("gravity", 1e-2, "EI/R^2", "particle weight during the deposition")
+                .positive(),
             ParameterSpec::real("rest_tolerance", 1e-2, "particle weight",
                                 "deposition at rest when the largest unbalanced vertex force is below this")
                 .positive(),
-            ParameterSpec::real("dt_factor", 0.25, "1",
-                                "time step over dt_c = sqrt(m/k_max); stable with up to 3 damped contacts on a "
-                                "vertex below 0.286 (decision spd-compaction-time-step)")
+            ParameterSpec::real(
+                "dt_factor", 0.25, "1",
+                "time step over dt_c = sqrt(m/k_max); stable with up to 3 damped contacts on a "
+                "vertex below 0.286 (decision spd-compaction-time-step)")
                 .positive(),
             ParameterSpec::integer("seed", 1, "1", "seed of the radii and of the deposition").non_negative(),
         },

@@ -175,7 +175,8 @@ Deposit deposit(const CompactionSetup& setup)
     // (rigid-body motion is not over-damped); budget 4000 ovalisation periods.
     const double omega2 = ring_damping(setup.assembly.ring) / (2 * setup.assembly.ring.vertex_mass);
     const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * dt));
-    d.steps = relax(model, dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight, budget);
+    d.steps =
+        relax(model, dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight, budget);
     d.residual_force = model.max_free_force();
     d.bottom_force = -model.contact_force_on(d.assembly.bottom).y();
     return d;
@@ -213,7 +214,8 @@ CompactionResult compaction(const CompactionSetup& setup,
     const double omega2 = ring_damping(ring) / (2 * ring.vertex_mass);
     result.wall_speed = setup.wall_speed * ring.radius * omega2;
     const double H_min = result.height0 * std::exp(-setup.strain_max);
-    const long half_steps = static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
+    const long half_steps =
+        static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
     const long interval = std::max(1L, half_steps / setup.records);
 
     const auto state = [&](bool loading) {
@@ -235,13 +237,16 @@ CompactionResult compaction(const CompactionSetup& setup,
     };
     // One half cycle: the top wall at `speed` until the height passes `target`; the last step is shortened
     // by placing the wall exactly at the target.
+    const double force_cap =
+        setup.stress_max * ring_scales(ring).characteristic.sigma_star * a.width * ring.material.s;
     const auto drive = [&](double speed, double target, bool loading, double progress_offset) {
         model.set_velocity(a.top, Vec2(0, speed));
         for (long n = 1;; ++n) {
             const double H = wall_height(a, a.top);
-            const bool last = speed < 0 ? H + speed * result.dt <= target : H + speed * result.dt >= target;
+            bool last = speed < 0 ? H + speed * result.dt <= target : H + speed * result.dt >= target;
             if (last) model.translate(a.top, Vec2(0, target - H - speed * result.dt));
             model.step(result.dt, 0.0);
+            if (loading && model.contact_force_on(a.top).y() >= force_cap) last = true; // stress cap
             if (last || n % interval == 0) record(loading);
             if (n % interval == 0) progress(progress_offset + 0.5 * static_cast<double>(n) / half_steps);
             if (last) break;

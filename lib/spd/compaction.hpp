@@ -13,7 +13,8 @@
 // Measures: sigma = top-wall force / (W s), sigma* = F*/(2 R s), F* = k_b/R (eq. 37, R the mean radius);
 // V_s = sum of the particle areas A_i + P_i r + pi r^2 (each shell polygon dilated by the vertex radius r,
 // Steiner's formula; decision spd-compaction-solid-volume); void ratio e = (W H - V_s)/V_s;
-// Delta V_s/Delta V = (V_s0 - V_s)/(W (H0 - H)); per-particle elastic energy W_i (ShellModel::elastic_energy).
+// Delta V_s/Delta V = (V_s0 - V_s)/(W (H0 - H)); per-particle elastic energy W_i
+// (ShellModel::elastic_energy).
 #pragma once
 
 #include "spd/assembly.hpp"
@@ -25,12 +26,15 @@ namespace softgrain::spd {
 
 struct CompactionSetup
 {
-    AssemblySetup assembly;      // particles, ring (nodes, eta, plastic_ratio, shell), spread, seed
-    double gravity = 1e-2;       // particle weight m_p g over the ring stiffness EI/R^2 (R the mean radius)
+    AssemblySetup assembly;       // particles, ring (nodes, eta, plastic_ratio, shell), spread, seed
+    double gravity = 1e-2;        // particle weight m_p g over the ring stiffness EI/R^2 (R the mean radius)
     double rest_tolerance = 1e-2; // rest criterion: largest unbalanced vertex force over the particle weight
-    double wall_speed = 1e-3;     // top-wall speed V over R omega_2 (omega_2: ovalisation frequency, ring.hpp)
-    double strain_max = 0.3;      // eps = ln(H0/H) at the end of loading
-    int records = 100;            // recorded states per half cycle
+    double wall_speed = 1e-3; // top-wall speed V over R omega_2 (omega_2: ovalisation frequency, ring.hpp)
+    double strain_max = 0.3;  // eps = ln(H0/H) at the end of loading
+    // ... or earlier, when sigma reaches stress_max sigma*: incompressible rings (eta = inf) cannot reach
+    // eps = ln(H0/H) > ln(V0/V_s) and a stiff sample would overlap its contacts first (exit 3).
+    double stress_max = 50;
+    int records = 100; // recorded states per half cycle
 };
 
 // Step (1): centres of frictionless disks (outer radii, unit weight each) at rest under gravity in a box of
@@ -48,10 +52,10 @@ struct Deposit
 {
     Assembly assembly;
     DiskPacking disks;
-    double weight = 0;          // particle weight m_p g [N]
-    long steps = 0;             // steps of the soft relaxation
-    double residual_force = 0;  // largest unbalanced vertex force at rest [N]
-    double bottom_force = 0;    // vertical force on the bottom wall at rest [N]
+    double weight = 0;         // particle weight m_p g [N]
+    long steps = 0;            // steps of the soft relaxation
+    double residual_force = 0; // largest unbalanced vertex force at rest [N]
+    double bottom_force = 0;   // vertical force on the bottom wall at rest [N]
 };
 Deposit deposit(const CompactionSetup& setup);
 
@@ -64,12 +68,12 @@ double solid_area(const ShellModel& model, int shell);
 
 struct CompactionState
 {
-    double strain;          // ln(H0/H)
-    double height;          // H [m]
-    double force_top;       // vertical force of the particles on the top wall (upwards) [N]
-    double force_bottom;    // on the bottom wall (downwards) [N]
-    double solid_area;      // sum of solid_area [m^2]
-    double kinetic_energy;  // [J]
+    double strain;         // ln(H0/H)
+    double height;         // H [m]
+    double force_top;      // vertical force of the particles on the top wall (upwards) [N]
+    double force_bottom;   // on the bottom wall (downwards) [N]
+    double solid_area;     // sum of solid_area [m^2]
+    double kinetic_energy; // [J]
     bool loading;
 };
 

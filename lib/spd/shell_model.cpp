@@ -526,19 +526,6 @@ double ShellModel::elastic_energy(int shell) const
     return W;
 }
 
-double ShellModel::power() const
-{
-    return (f_.array() * v_.array() * (inverse_mass_.array() > 0).cast<double>()).sum();
-}
-
-void ShellModel::mix_velocities(double alpha)
-{
-    const Eigen::ArrayXd free = (inverse_mass_.array() > 0).cast<double>();
-    const double v_norm = (v_.array() * free).matrix().norm(), f_norm = (f_.array() * free).matrix().norm();
-    if (f_norm == 0) return;
-    v_.array() = free * ((1 - alpha) * v_.array() + alpha * v_norm / f_norm * f_.array()) + (1 - free) * v_.array();
-}
-
 void ShellModel::stop()
 {
     for (Eigen::Index d = 0; d < v_.size(); ++d)
@@ -587,31 +574,6 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
           << dt / model.critical_time_step() << " dt_c too close to the stability limit "
           << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
-}
-
-long fire_relax(ShellModel& model, double dt, double force_tolerance, long max_steps)
-{
-    constexpr int n_min = 5;
-    constexpr double alpha_start = 0.1, f_alpha = 0.99;
-    double alpha = alpha_start;
-    long downhill = 0;
-    for (long n = 1; n <= max_steps; ++n) {
-        model.step(dt, 0.0);
-        if (n % 16 == 0 && model.max_free_force() < force_tolerance) return n;
-        if (model.power() > 0) {
-            model.mix_velocities(alpha);
-            if (++downhill > n_min) alpha *= f_alpha;
-        } else { // uphill: restart from rest
-            model.stop();
-            alpha = alpha_start;
-            downhill = 0;
-        }
-    }
-    std::ostringstream cause;
-    cause << "FIRE relaxation not reached in " << max_steps << " steps (largest unbalanced force "
-          << model.max_free_force() << " N > tolerance " << force_tolerance
-          << " N): a slow collective mode or a mechanism (a particle without support)";
-    throw NumericalError("FIRE relaxation", model.steps(), cause.str());
 }
 
 } // namespace softgrain::spd

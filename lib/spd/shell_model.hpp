@@ -117,11 +117,7 @@ class ShellModel
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
     double hinge_torque(int vertex) const { return torque_[vertex]; }
 
-    // FIRE velocity mixing (Bitzek et al., PRL 97 (2006) 170201) over the free degrees of freedom:
-    // power() = F.v (damping excluded), mix_velocities(alpha): v <- (1 - alpha) v + alpha |v| F/|F|,
-    // stop(): v = 0.
-    double power() const;
-    void mix_velocities(double alpha);
+    // Sets the velocities of all free degrees of freedom to zero (a packing released at rest).
     void stop();
     // Replaces the laws of a shell (e.g. switching plasticity on after an elastic deposition); the current
     // forces and torques are kept and clamped by the new thresholds at the next force evaluation.
@@ -193,12 +189,5 @@ class ShellModel
 // is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice.
 // Returns the number of steps taken.
 long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps);
-
-// The same rest criterion reached by FIRE instead of viscous damping: velocity-Verlet steps at the fixed,
-// stable dt (no time-step growth: dt is already at the stability limit) with the FIRE velocity mixing and
-// restarts, parameters of Bitzek et al. (N_min = 5, alpha_start = 0.1, f_alpha = 0.99). Converges on the
-// slow collective modes of a packing where a fixed damping tuned to one ring mode over- or under-damps.
-// Throws NumericalError if max_steps do not suffice. Returns the number of steps taken.
-long fire_relax(ShellModel& model, double dt, double force_tolerance, long max_steps);
 
 } // namespace softgrain::spd
