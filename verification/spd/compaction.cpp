@@ -1,3 +1,4 @@
+// ctest-label: slow
 // SPD section 5: the compaction protocol of spd.compaction — the deposited packing is at rest (force
 // balance with the weight), the loading is quasi-static (top and bottom wall forces balance), and the solid
 // volume V_s (shells dilated by r, Steiner's formula) plus the void volume fills the box.
