@@ -2,6 +2,7 @@
 # unloading dashed, four sets.
 set multiplot layout 1,2
 set logscale x
+set format x "10^{%L}"
 set xlabel "{/Symbol s} / {/Symbol s}*"
 set key bottom left
 titles = "'{/Symbol h} = 0' '{/Symbol h} = 1' '{/Symbol h} = {/Symbol \245}' '{/Symbol h} = 0, plastic'"
