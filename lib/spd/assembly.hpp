@@ -33,6 +33,13 @@ struct Assembly
 };
 Assembly rings_in_box(const AssemblySetup& setup, int columns);
 
+// The ring radii of a setup: R (1 + spread g), g drawn from `seed` (decision spd-polydispersity).
+std::vector<double> ring_radii(const AssemblySetup& setup);
+// Rings of the given radii centred at `centres`, in the box [0, width] x [0, height] of four rigid walls
+// (radius 0, the bottom wall on y = 0), with the contact law of rings_in_box.
+Assembly rings_at(const AssemblySetup& setup, const std::vector<double>& radii,
+                  const std::vector<Vec2>& centres, double width, double height);
+
 // Free (non-rigid) vertices of the assembly.
 int particle_vertices(const Assembly& assembly);
 

@@ -1,12 +1,15 @@
-// Scenes of SPD assemblies (Trivino et al., section 5): spd.bench.
+// Scenes of SPD assemblies (Trivino et al., section 5): spd.bench, spd.compaction.
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
+#include "spd/compaction.hpp"
 #include "spd/spd_scenes.hpp"
 
+#include <gsl/gsl_fit.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -69,6 +72,140 @@ void run_bench(const Parameters& p, RunContext& ctx)
     s["neighbour_skin"] = a.model.neighbour_skin();
 }
 
+// Slope and intercept of the least-squares line y = c0 + c1 x (GSL); NaN below two points.
+std::pair<double, double> least_squares_line(const std::vector<double>& x, const std::vector<double>& y)
+{
+    if (x.size() < 2) return {NAN, NAN};
+    double c0, c1, cov00, cov01, cov11, ss;
+    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &ss);
+    return {c0, c1};
+}
+
+// spd.compaction (section 5, Figs. 26-29): deposition under gravity, uniaxial loading to eps = strain_max
+// at constant top-wall speed, unloading back to H0 (lib/spd/compaction.hpp).
+void run_compaction(const Parameters& p, RunContext& ctx)
+{
+    CompactionSetup setup;
+    setup.assembly.particles = static_cast<int>(p.integer("particles"));
+    setup.assembly.radius_spread = p.real("radius_spread");
+    setup.assembly.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    RingSetup& ring = setup.assembly.ring;
+    ring.nodes = static_cast<int>(p.integer("nodes"));
+    ring.material.h = p.real("h");
+    ring.eta = p.real("eta");
+    ring.plastic_ratio = p.real("plastic_ratio");
+    setup.gravity = p.real("gravity");
+    setup.rest_tolerance = p.real("rest_tolerance");
+    setup.wall_speed = p.real("wall_speed");
+    setup.strain_max = p.real("strain_max");
+    setup.stress_max = p.real("stress_max");
+    ring.dt_factor = p.real("dt_factor");
+    if (ring.material.h >= 0.5 * ring.radius)
+        throw InputError("h = " + std::to_string(ring.material.h) +
+                         ": the shell must be thin against the ring; allowed: h < 0.5 R = 0.5 m");
+    ctx.record_seed(setup.assembly.seed);
+    const RingScales sc = ring_scales(ring);
+    const double R = ring.radius, s_depth = ring.material.s, sigma_star = sc.characteristic.sigma_star;
+    auto progress = ctx.progress("spd.compaction");
+    const CompactionResult r = compaction(
+        setup, [](const Assembly&, const CompactionState&) {}, [&](double f) { progress.update(f); });
+    // Quasi-static check: largest |F_top - F_bottom| over the loading, relative to the largest top force.
+    double mismatch = 0, force_max = 0;
+    for (const CompactionState& st : r.states)
+        if (st.loading) {
+            mismatch = std::max(mismatch, std::abs(st.force_top - st.force_bottom));
+            force_max = std::max(force_max, st.force_top);
+        }
+    mismatch /= force_max;
+    progress.finish();
+    ctx.count_steps(r.steps + r.deposit.steps);
+    const double W = r.width, A0 = r.solid_area0;
+    const auto void_ratio = [&](const CompactionState& st) {
+        return (W * st.height - st.solid_area) / st.solid_area;
+    };
+    const auto volume_share = [&](const CompactionState& st) {
+        return st.height < r.height0 ? (A0 - st.solid_area) / (W * (r.height0 - st.height)) : NAN;
+    };
+    auto& table = ctx.table(
+        "compaction.dat",
+        {{"eps", "1", "vertical strain ln(H0/H)"},
+         {"loading", "1", "1 loading, 0 unloading"},
+         {"H_over_R", "1", "sample height over the mean radius"},
+         {"sigma_over_sigmastar", "1", "top-wall stress F_top/(W s) over sigma* = F*/(2Rs), eq. (37)"},
+         {"sigma_bottom_over_sigmastar", "1", "bottom-wall stress over sigma*"},
+         {"e", "1", "void ratio V_r/V_s (V_s: shells dilated by r)"},
+         {"dVs_over_dV", "1", "particle share of the volume change (V_s0 - V_s)/(V0 - V)"},
+         {"kinetic_over_weightR", "1", "kinetic energy over the deposition weight times R"}});
+    const CompactionState* end_of_loading = nullptr;
+    double residual_strain = NAN, dVs_peak = 0, sigma_max = 0;
+    for (const CompactionState& st : r.states) {
+        table.row({st.strain, st.loading ? 1.0 : 0.0, st.height / R,
+                   st.force_top / (W * s_depth) / sigma_star, st.force_bottom / (W * s_depth) / sigma_star,
+                   void_ratio(st), volume_share(st), st.kinetic_energy / (r.deposit.weight * R)});
+        if (st.loading) {
+            end_of_loading = &st;
+            sigma_max = std::max(sigma_max, st.force_top / (W * s_depth) / sigma_star);
+            if (std::isfinite(volume_share(st)) && st.strain >= 0.05)
+                dVs_peak = std::max(dVs_peak, volume_share(st));
+        } else if (std::isnan(residual_strain) && st.force_top <= 0) {
+            residual_strain = st.strain; // the top wall leaves the sample
+        }
+    }
+    // Eq. (38): e = e0 - C log10(sigma/sigma*) over the last two decades of stress of the loading.
+    std::vector<double> log_sigma, e_fit;
+    for (const CompactionState& st : r.states) {
+        const double sigma = st.force_top / (W * s_depth) / sigma_star;
+        if (st.loading && sigma >= 0.01 * sigma_max) {
+            log_sigma.push_back(std::log10(sigma));
+            e_fit.push_back(void_ratio(st));
+        }
+    }
+    const auto [e0_fit, slope] = least_squares_line(log_sigma, e_fit);
+    auto& snapshot = ctx.table(
+        "snapshot.dat", {{"particle", "1", "particle index"},
+                         {"x_over_R", "1", "vertex position over the mean radius (closed polygon)"},
+                         {"y_over_R", "1", "vertex position"},
+                         {"W_over_mean", "1", "elastic energy W_i of the particle over <W> (Fig. 29)"}});
+    double W_mean = 0;
+    for (double w : r.snapshot_energy)
+        W_mean += w / static_cast<double>(r.snapshot_energy.size());
+    for (std::size_t i = 0; i < r.snapshot.size(); ++i)
+        for (std::size_t k = 0; k <= r.snapshot[i].size(); ++k) {
+            const Vec2& x = r.snapshot[i][k % r.snapshot[i].size()];
+            snapshot.row({double(i), x.x() / R, x.y() / R, r.snapshot_energy[i] / W_mean});
+        }
+    const auto or_null = [](double v) {
+        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    };
+    auto& s = ctx.summary();
+    const CompactionState& first = r.states.front();
+    const CompactionState& last = r.states.back();
+    s["e0"] = void_ratio(first);
+    s["e_at_strain_max"] = void_ratio(*end_of_loading);
+    s["e_after_unloading"] = void_ratio(last);
+    s["strain_at_max"] = end_of_loading->strain;
+    s["sigma_over_sigmastar_max"] = sigma_max;
+    s["compressibility_index"] = or_null(-slope);
+    s["compressibility_fit_e0"] = or_null(e0_fit);
+    s["compressibility_fit_points"] = log_sigma.size();
+    s["dVs_over_dV_at_strain_max"] = or_null(volume_share(*end_of_loading));
+    s["dVs_over_dV_peak"] = dVs_peak;
+    s["residual_strain"] = or_null(residual_strain);
+    s["wall_force_mismatch_max"] = mismatch;
+    s["deposit_bottom_force_over_weight"] =
+        r.deposit.bottom_force / (r.deposit.weight * setup.assembly.particles);
+    s["deposit_residual_over_particle_weight"] = r.deposit.residual_force / r.deposit.weight;
+    s["deposit_steps"] = r.deposit.steps;
+    s["disk_fire_iterations"] = r.deposit.disks.iterations;
+    s["H0_over_R"] = r.height0 / R;
+    s["W_over_R"] = W / R;
+    s["vertices"] = particle_vertices(r.deposit.assembly);
+    s["sigma_star"] = sigma_star;
+    s["wall_speed_m_per_s"] = r.wall_speed;
+    s["dt"] = r.dt;
+    s["compaction_steps"] = r.steps - r.deposit.steps;
+}
+
 } // namespace
 
 void register_spd_assembly_scenes(SceneRegistry& registry)
@@ -83,6 +220,50 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             ParameterSpec::integer("seed", 1, "1", "seed of the initial velocities").non_negative(),
         },
         run_bench});
+    registry.add(Scene{
+        "spd.compaction",
+        "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell rings "
+        "deposited under gravity; sigma/sigma*, void ratio, Delta V_s/Delta V, W_i/<W> (Figs. 26-29)",
+        {
+            ParameterSpec::integer("particles", 40, "1", "number of rings (the paper: 500)").at_least(2),
+            ParameterSpec::integer("nodes", 16, "1", "vertices per ring").at_least(8),
+            ParameterSpec::real("h", 0.1, "m", "shell thickness (2r = h; mean ring radius R = 1 m)")
+                .positive(),
+            ParameterSpec::real("radius_spread", 0.15, "1", "Delta R/R, standard deviation of the radii")
+                .non_negative()
+                .below(0.5),
+            ParameterSpec::real("eta", 0.0, "1",
+                                "core-to-shell stiffness ratio, eq. (24); inf: incompressible core")
+                .non_negative()
+                .infinity_allowed(),
+            ParameterSpec::real("plastic_ratio", INFINITY, "1", "M_b^Y/M*, eq. (32); inf: elastic shells")
+                .positive()
+                .infinity_allowed(),
+            ParameterSpec::real(
+                "wall_speed", 1e-3, "R omega_2",
+                "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
+                .positive(),
+            ParameterSpec::real("strain_max", 0.3, "1", "largest vertical strain ln(H0/H)")
+                .positive()
+                .below(1.0),
+            ParameterSpec::real("stress_max", 50.0, "sigma*",
+                                "loading also ends when sigma reaches this (incompressible rings jam before "
+                                "eps = ln(V0/V_s))")
+                .positive()
+                .infinity_allowed(),
+            ParameterSpec::real("gravity", 1e-2, "EI/R^2", "particle weight during the deposition")
+                .positive(),
+            ParameterSpec::real("rest_tolerance", 1e-2, "particle weight",
+                                "deposition at rest when the largest unbalanced vertex force is below this")
+                .positive(),
+            ParameterSpec::real(
+                "dt_factor", 0.25, "1",
+                "time step over dt_c = sqrt(m/k_max); stable with up to 3 damped contacts on a "
+                "vertex below 0.286 (decision spd-compaction-time-step)")
+                .positive(),
+            ParameterSpec::integer("seed", 1, "1", "seed of the radii and of the deposition").non_negative(),
+        },
+        run_compaction});
 }
 
 } // namespace softgrain

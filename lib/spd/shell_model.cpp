@@ -268,16 +268,44 @@ void ShellModel::evaluate_contact(Candidate& cand, double dt) const
         F += cand.friction * t;
     }
     cand.active = true;
+    cand.distance = prox.distance;
     cand.fn = fn;
     cand.w_a = w[0];
     cand.w_b = w[1];
     cand.force = F;
 }
 
+// One contact per (vertex, other shell): the nearest of its touching elements (decision
+// spd-contact-nearest-element). At a concave corner of the other shell a vertex lies within reach of both
+// adjacent elements and projects inside both; counting both doubles the force there, and the second term
+// vanishes abruptly when the projection leaves its element: a jump of the contact energy that injects
+// energy into a vertex sliding across the corner. The distance to the nearest element is continuous, so is
+// the energy. The candidates are sorted by (vertex, element), so the elements of one shell are contiguous.
+// A friction history dropped here restarts at zero (the scenes of section 5 are frictionless).
+void ShellModel::keep_nearest_elements()
+{
+    const std::size_t n = candidates_.size();
+    for (std::size_t m = 0; m < n;) {
+        const int vertex = candidates_[m].vertex, shell = shell_of(candidates_[m].a);
+        std::size_t end = m, nearest = n;
+        for (; end < n && candidates_[end].vertex == vertex && shell_of(candidates_[end].a) == shell; ++end)
+            if (candidates_[end].active &&
+                (nearest == n || candidates_[end].distance < candidates_[nearest].distance))
+                nearest = end;
+        for (std::size_t k = m; k < end; ++k)
+            if (k != nearest && candidates_[k].active) {
+                candidates_[k].active = false;
+                candidates_[k].friction = 0;
+            }
+        m = end;
+    }
+}
+
 // Adds the contacts of all candidates to the vertices in the fixed order of the candidates (vertex, element):
 // the forces do not depend on the number of threads that evaluated them, bit for bit.
 void ShellModel::gather_contact_forces()
 {
+    keep_nearest_elements();
     for (const Candidate& cand : candidates_) {
         if (cand.overlap) {
             const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
@@ -461,13 +489,27 @@ void ShellModel::check_time_step(double dt) const
     throw NumericalError("time step", steps_, cause.str());
 }
 
+double ShellModel::shell_stretch_energy(const Shell& s) const
+{
+    double W = 0;
+    for (int k = 0; k < s.elements(); ++k)
+        W += axial_[s.first + k] * axial_[s.first + k] / (2 * s.laws.k_s);
+    return W;
+}
+
+double ShellModel::shell_bending_energy(const Shell& s) const
+{
+    double W = 0;
+    for (int k = 0; k < s.count; ++k)
+        if (s.has_hinge(k)) W += torque_[s.first + k] * torque_[s.first + k] / (2 * s.laws.k_b);
+    return W;
+}
+
 double ShellModel::stretch_energy() const
 {
     double W = 0;
     for (const Shell& s : shells_)
-        if (!s.rigid)
-            for (int k = 0; k < s.elements(); ++k)
-                W += axial_[s.first + k] * axial_[s.first + k] / (2 * s.laws.k_s);
+        if (!s.rigid) W += shell_stretch_energy(s);
     return W;
 }
 
@@ -475,10 +517,24 @@ double ShellModel::bending_energy() const
 {
     double W = 0;
     for (const Shell& s : shells_)
-        if (!s.rigid)
-            for (int k = 0; k < s.count; ++k)
-                if (s.has_hinge(k)) W += torque_[s.first + k] * torque_[s.first + k] / (2 * s.laws.k_b);
+        if (!s.rigid) W += shell_bending_energy(s);
     return W;
+}
+
+double ShellModel::elastic_energy(int shell) const
+{
+    const Shell& s = shells_[shell];
+    if (s.rigid) return 0.0;
+    double W = shell_stretch_energy(s) + shell_bending_energy(s);
+    if (s.closed && s.K_Omega > 0 && !s.incompressible())
+        W += core_V0_[shell] * core_p_[shell] * core_p_[shell] / (2 * s.K_Omega);
+    return W;
+}
+
+void ShellModel::stop()
+{
+    for (Eigen::Index d = 0; d < v_.size(); ++d)
+        if (inverse_mass_[d] > 0) v_[d] = 0;
 }
 
 double ShellModel::kinetic_energy() const

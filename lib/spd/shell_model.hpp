@@ -97,6 +97,9 @@ class ShellModel
     double area(int shell) const;  // polygon area [m^2], CCW positive
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
+    // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
+    // undrained core of eq. (4) (finite K_Omega > 0 only; an incompressible core stores none) [J].
+    double elastic_energy(int shell) const;
     // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
     // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
@@ -113,6 +116,12 @@ class ShellModel
     int vertices() const { return static_cast<int>(x_.size() / 2); }
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
     double hinge_torque(int vertex) const { return torque_[vertex]; }
+
+    // Sets the velocities of all free degrees of freedom to zero (a packing released at rest).
+    void stop();
+    // Replaces the laws of a shell (e.g. switching plasticity on after an elastic deposition); the current
+    // forces and torques are kept and clamped by the new thresholds at the next force evaluation.
+    void set_laws(int shell, const ShellLaws& laws) { shells_[shell].laws = laws; }
 
     // Kinematic control of a rigid shell: sets the velocity of all its vertices.
     void set_velocity(int shell, const Vec2& velocity);
@@ -132,6 +141,8 @@ class ShellModel
     int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
     int prev(const Shell& s, int local) const { return s.first + (local + s.count - 1) % s.count; }
     void internal_forces(const Shell& s);
+    double shell_stretch_energy(const Shell& s) const;
+    double shell_bending_energy(const Shell& s) const;
     void core_forces(int index);
     void step_constrained(double dt, double damping);
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
@@ -161,6 +172,7 @@ class ShellModel
         double friction = 0;
         bool active = false, overlap = false; // in contact; overlap beyond 95% of r_i + r_j (exit 3)
         double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
+        double distance = 0;                  // vertex-element distance while active [m]
         Vec2 force = Vec2::Zero();            // force on the vertex [N]
     };
     std::vector<Candidate> candidates_; // sorted by (vertex, a)
@@ -168,6 +180,7 @@ class ShellModel
     double list_length_ = 0; // element length bound L of the list's cutoff [m]
     int list_builds_ = 0;
     void evaluate_contact(Candidate& candidate, double dt) const;
+    void keep_nearest_elements();
     void gather_contact_forces();
     ContactLaw contact_;
     std::int64_t steps_ = 0;

@@ -10,6 +10,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -53,7 +54,9 @@ Jostling jostling_rings(int particles, double speed_per_step)
 
 // All-pairs reference of section 2.3: every vertex against every element of every other shell (not both
 // rigid), eq. (6) without damping, a contact at an element end counted once (with the element starting there,
-// or ending there for the last vertex of an open shell). Returns the normal force received by each vertex.
+// or ending there for the last vertex of an open shell), and one contact per (vertex, other shell): its
+// nearest touching element, the first in index order on a tie (decision spd-contact-nearest-element). Returns
+// the normal force received by each vertex.
 std::vector<double> all_pairs_normal_forces(const ShellModel& model, double k_n, int& contacts)
 {
     const auto& shells = model.shells();
@@ -63,18 +66,22 @@ std::vector<double> all_pairs_normal_forces(const ShellModel& model, double k_n,
         for (std::size_t q = 0; q < shells.size(); ++q) {
             const Shell &sp = shells[p], &sq = shells[q];
             if (p == q || (sp.rigid && sq.rigid)) continue;
-            for (int i = sp.first; i < sp.first + sp.count; ++i)
+            const double reach = sp.radius + sq.radius;
+            for (int i = sp.first; i < sp.first + sp.count; ++i) {
+                double nearest = INFINITY;
                 for (int k = 0; k < sq.elements(); ++k) {
                     const int a = sq.first + k, b = sq.first + (k + 1) % sq.count;
                     const SegmentProximity prox =
                         point_segment_proximity(model.vertex(i), model.vertex(a), model.vertex(b));
-                    const double reach = sp.radius + sq.radius;
                     if (prox.distance >= reach) continue;
                     if (prox.branch == SegmentBranch::end_b && !(!sq.closed && k == sq.elements() - 1))
                         continue;
-                    fn[i] += normal_contact_force(k_n, prox.distance, reach);
-                    ++contacts;
+                    nearest = std::min(nearest, prox.distance);
                 }
+                if (nearest == INFINITY) continue;
+                fn[i] += normal_contact_force(k_n, nearest, reach);
+                ++contacts;
+            }
         }
     return fn;
 }

@@ -1,0 +1,271 @@
+#include "spd/compaction.hpp"
+
+#include "core/errors.hpp"
+#include "core/fire.hpp"
+#include "core/geometry.hpp"
+#include "core/neighbour_list.hpp"
+#include "core/rng.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace softgrain::spd {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+
+// Harmonic repulsion k/2 overlap^2 of rigid disks (used only to build the packing of step (1)): adds its
+// energy and forces on the two disks to (U, f).
+void disk_pair_energy(const Vec2& xi, const Vec2& xj, double reach, double k, double& U, Vec2& fi, Vec2& fj)
+{
+    const Vec2 d = xj - xi;
+    const double distance = d.norm();
+    if (distance >= reach) return;
+    const double overlap = reach - distance;
+    U += 0.5 * k * overlap * overlap;
+    const Vec2 push = k * overlap * d / distance; // on j, away from i
+    fj += push;
+    fi -= push;
+}
+
+// A disk against a wall: overlap = radius - distance to the wall line along the inward normal n.
+void disk_wall_energy(double distance, double radius, const Vec2& n, double k, double& U, Vec2& f)
+{
+    if (distance >= radius) return;
+    const double overlap = radius - distance;
+    U += 0.5 * k * overlap * overlap;
+    f += k * overlap * n;
+}
+
+// Mean ring radius of an assembly.
+double mean_radius(const std::vector<double>& radii)
+{
+    double sum = 0;
+    for (double R : radii)
+        sum += R;
+    return sum / static_cast<double>(radii.size());
+}
+
+double top_of_particles(const Assembly& a)
+{
+    double top = -INFINITY;
+    for (int p : a.particles) {
+        const Shell& s = a.model.shells()[p];
+        for (int i = s.first; i < s.first + s.count; ++i)
+            top = std::max(top, a.model.vertex(i).y() + s.radius);
+    }
+    return top;
+}
+
+double wall_height(const Assembly& a, int wall)
+{
+    return a.model.vertex(a.model.shells()[wall].first).y();
+}
+} // namespace
+
+double compaction_box_width(const std::vector<double>& radii)
+{
+    double area = 0;
+    for (double R : radii)
+        area += pi * R * R;
+    return std::sqrt(area / 0.82);
+}
+
+double solid_area(const ShellModel& model, int shell)
+{
+    const Shell& s = model.shells()[shell];
+    Points<2> polygon(2, s.count);
+    for (int k = 0; k < s.count; ++k)
+        polygon.col(k) = model.vertex(s.first + k);
+    return polygon_signed_area(polygon) + polygon_perimeter(polygon) * s.radius + pi * s.radius * s.radius;
+}
+
+DiskPacking deposit_disks(const std::vector<double>& radii, double width, std::uint64_t seed)
+{
+    const int n = static_cast<int>(radii.size());
+    const double R_mean = mean_radius(radii), R_max = *std::max_element(radii.begin(), radii.end());
+    // Stiff enough that the overlaps under a column of sqrt(n) disks stay below 1e-3 sqrt(n) R: the rings
+    // placed at these centres start with overlaps far below their contact reach 2r.
+    const double k = 1e4 / R_mean;
+    const int columns = std::max(1, static_cast<int>(width / (2.1 * R_max)));
+    const double pitch_x = width / columns, pitch_y = 2.1 * R_max;
+    Rng rng(seed + 7919); // a stream independent of the radii's
+    Eigen::VectorXd x(2 * n);
+    for (int i = 0; i < n; ++i) {
+        const double spare = 0.5 * (pitch_x - 2 * R_max);
+        x[2 * i] = (i % columns + 0.5) * pitch_x + rng.uniform(-spare, spare);
+        x[2 * i + 1] = (i / columns + 0.5) * pitch_y + rng.uniform(0, 0.1 * R_max);
+    }
+    NeighbourList<2> list(2 * R_max, 0.5 * R_mean);
+    const auto energy_and_force = [&](const Eigen::VectorXd& xs, Eigen::VectorXd& f) {
+        const Points<2> positions = Eigen::Map<const Points<2>>(xs.data(), 2, n);
+        list.update(positions);
+        f.setZero(2 * n);
+        double U = 0;
+        for (int i = 0; i < n; ++i) {
+            const Vec2 c = positions.col(i);
+            Vec2 fi = Vec2(0, -1.0); // unit weight
+            U += c.y();
+            disk_wall_energy(c.y(), radii[i], Vec2(0, 1), k, U, fi);
+            disk_wall_energy(c.x(), radii[i], Vec2(1, 0), k, U, fi);
+            disk_wall_energy(width - c.x(), radii[i], Vec2(-1, 0), k, U, fi);
+            f.segment<2>(2 * i) += fi;
+        }
+        for (const auto& [i, j] : list.pairs()) {
+            Vec2 fi = Vec2::Zero(), fj = Vec2::Zero();
+            disk_pair_energy(positions.col(i), positions.col(j), radii[i] + radii[j], k, U, fi, fj);
+            f.segment<2>(2 * i) += fi;
+            f.segment<2>(2 * j) += fj;
+        }
+        return U;
+    };
+    FireOptions options;
+    options.dt_initial = 0.05 / std::sqrt(k);
+    options.dt_max = 0.2 / std::sqrt(k);
+    options.force_tolerance = 1e-6; // of the unit weight
+    options.kinetic_tolerance = 1e-14;
+    options.max_iterations = 5'000'000;
+    const FireResult r = fire_minimise(x, energy_and_force, options);
+    if (!r.converged) {
+        std::ostringstream cause;
+        cause << "rigid-disk deposition: FIRE stopped after " << r.iterations << " iterations at rms force "
+              << r.force_rms << " of the disk weight (tolerance 1e-6)";
+        throw NumericalError("disk deposition", r.iterations, cause.str());
+    }
+    DiskPacking packing;
+    packing.iterations = r.iterations;
+    packing.top = -INFINITY;
+    for (int i = 0; i < n; ++i) {
+        packing.centres.emplace_back(x[2 * i], x[2 * i + 1]);
+        packing.top = std::max(packing.top, x[2 * i + 1] + radii[i]);
+    }
+    return packing;
+}
+
+Deposit deposit(const CompactionSetup& setup)
+{
+    const std::vector<double> radii = ring_radii(setup.assembly);
+    const RingScales sc = ring_scales(setup.assembly.ring);
+    const double r = sc.radius_vertex;
+    std::vector<double> outer;
+    for (double R : radii)
+        outer.push_back(R + r);
+    const double width = compaction_box_width(outer);
+    Deposit d;
+    d.disks = deposit_disks(outer, width, setup.assembly.seed);
+    // The rings are elastic while they settle (decision spd-compaction-deposition).
+    AssemblySetup elastic = setup.assembly;
+    elastic.ring.plastic_ratio = INFINITY;
+    const double R = setup.assembly.ring.radius;
+    d.assembly = rings_at(elastic, radii, d.disks.centres, width, d.disks.top + 2 * R);
+    ShellModel& model = d.assembly.model;
+    const int nodes = setup.assembly.ring.nodes;
+    d.weight = setup.gravity * sc.flexural_rigidity / (R * R);
+    for (int p : d.assembly.particles) {
+        const Shell& s = model.shells()[p];
+        for (int i = s.first; i < s.first + s.count; ++i)
+            model.set_applied_force(i, Vec2(0, -d.weight / nodes));
+    }
+    const double dt = setup.assembly.ring.dt_factor * model.critical_time_step();
+    model.check_time_step(dt);
+    // Damped relaxation (decision spd-compaction-deposition): global viscous damping 5% of the critical
+    // damping of the ovalisation mode, 2 m omega_2 (ring_damping), so that the rings still fall and rearrange
+    // (rigid-body motion is not over-damped); budget 4000 ovalisation periods.
+    const double omega2 = ring_damping(setup.assembly.ring) / (2 * setup.assembly.ring.vertex_mass);
+    const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * dt));
+    d.steps =
+        relax(model, dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight, budget);
+    d.residual_force = model.max_free_force();
+    d.bottom_force = -model.contact_force_on(d.assembly.bottom).y();
+    return d;
+}
+
+CompactionResult compaction(const CompactionSetup& setup,
+                            const std::function<void(const Assembly&, const CompactionState&)>& observe,
+                            const std::function<void(double)>& progress)
+{
+    CompactionResult result;
+    result.deposit = deposit(setup);
+    Assembly& a = result.deposit.assembly;
+    ShellModel& model = a.model;
+    const RingSetup& ring = setup.assembly.ring;
+    // Gravity off, plasticity on, the set's laws from now on.
+    for (int p : a.particles) {
+        const Shell& s = model.shells()[p];
+        for (int i = s.first; i < s.first + s.count; ++i)
+            model.set_applied_force(i, Vec2::Zero());
+        RingSetup own = ring; // M^Y = plastic_ratio M* of the ring's own R_i and l0 (eq. (32))
+        own.radius = a.radii[p];
+        model.set_laws(p, ring_scales(own).laws);
+    }
+    model.stop();
+    // Top wall in contact with the highest ring: H = H0.
+    result.height0 = top_of_particles(a);
+    model.translate(a.top, Vec2(0, result.height0 - wall_height(a, a.top)));
+    result.width = a.width;
+    result.solid_area0 = 0;
+    for (int p : a.particles)
+        result.solid_area0 += solid_area(model, p);
+
+    result.dt = ring.dt_factor * model.critical_time_step();
+    model.check_time_step(result.dt);
+    const double omega2 = ring_damping(ring) / (2 * ring.vertex_mass);
+    result.wall_speed = setup.wall_speed * ring.radius * omega2;
+    const double H_min = result.height0 * std::exp(-setup.strain_max);
+    const long half_steps =
+        static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
+    const long interval = std::max(1L, half_steps / setup.records);
+
+    const auto state = [&](bool loading) {
+        CompactionState st;
+        st.height = wall_height(a, a.top);
+        st.strain = std::log(result.height0 / st.height);
+        st.force_top = model.contact_force_on(a.top).y();
+        st.force_bottom = -model.contact_force_on(a.bottom).y();
+        st.solid_area = 0;
+        for (int p : a.particles)
+            st.solid_area += solid_area(model, p);
+        st.kinetic_energy = model.kinetic_energy();
+        st.loading = loading;
+        return st;
+    };
+    const auto record = [&](bool loading) {
+        result.states.push_back(state(loading));
+        observe(a, result.states.back());
+    };
+    // One half cycle: the top wall at `speed` until the height passes `target`; the last step is shortened
+    // by placing the wall exactly at the target.
+    const double force_cap =
+        setup.stress_max * ring_scales(ring).characteristic.sigma_star * a.width * ring.material.s;
+    const auto drive = [&](double speed, double target, bool loading, double progress_offset) {
+        model.set_velocity(a.top, Vec2(0, speed));
+        for (long n = 1;; ++n) {
+            const double H = wall_height(a, a.top);
+            bool last = speed < 0 ? H + speed * result.dt <= target : H + speed * result.dt >= target;
+            if (last) model.translate(a.top, Vec2(0, target - H - speed * result.dt));
+            model.step(result.dt, 0.0);
+            if (loading && model.contact_force_on(a.top).y() >= force_cap) last = true; // stress cap
+            if (last || n % interval == 0) record(loading);
+            if (n % interval == 0) progress(progress_offset + 0.5 * static_cast<double>(n) / half_steps);
+            if (last) break;
+        }
+        model.set_velocity(a.top, Vec2::Zero());
+    };
+    record(true);
+    drive(-result.wall_speed, H_min, true, 0.0);
+    for (int p : a.particles) {
+        const Shell& s = model.shells()[p];
+        std::vector<Vec2> vertices;
+        for (int i = s.first; i < s.first + s.count; ++i)
+            vertices.push_back(model.vertex(i));
+        result.snapshot.push_back(std::move(vertices));
+        result.snapshot_energy.push_back(model.elastic_energy(p));
+    }
+    drive(result.wall_speed, result.height0, false, 0.5);
+    result.steps = model.steps();
+    return result;
+}
+
+} // namespace softgrain::spd

@@ -1,0 +1,98 @@
+// SPD section 5 (Trivino et al.): uniaxial compaction of an assembly of frictionless core-shell rings.
+//
+// Protocol (decision spd-compaction-deposition): (1) rigid-disk deposition: disks of the rings' outer radii
+// R_i + r fall under gravity into the box and come to rest by FIRE energy minimisation (cheap: 2 dof per
+// particle); (2) the SPD rings are placed at the disk centres and relaxed under gravity by damped dynamics
+// (relax, 5% of the critical damping of the ring's ovalisation mode) with the set's core stiffness eta and
+// plasticity off, until the largest unbalanced force on a free vertex is below rest_tolerance times the
+// particle weight; (3) gravity is removed, plasticity switched on, the top wall placed in contact with the
+// highest ring (H = H0) and moved down at constant speed to eps = ln(H0/H) = strain_max (or until sigma =
+// stress_max sigma*), then up at the same speed back to H0 (unloading). Time step 0.25 dt_c (decision
+// spd-compaction-time-step). The packing of step (1) is a
+// deterministic function of the seed, so the parameter sets of Fig. 27 share it exactly.
+//
+// Measures: sigma = top-wall force / (W s), sigma* = F*/(2 R s), F* = k_b/R (eq. 37, R the mean radius);
+// V_s = sum of the particle areas A_i + P_i r + pi r^2 (each shell polygon dilated by the vertex radius r,
+// Steiner's formula; decision spd-compaction-solid-volume); void ratio e = (W H - V_s)/V_s;
+// Delta V_s/Delta V = (V_s0 - V_s)/(W (H0 - H)); per-particle elastic energy W_i
+// (ShellModel::elastic_energy).
+#pragma once
+
+#include "spd/assembly.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace softgrain::spd {
+
+struct CompactionSetup
+{
+    AssemblySetup assembly;       // particles, ring (nodes, eta, plastic_ratio, shell), spread, seed
+    double gravity = 1e-2;        // particle weight m_p g over the ring stiffness EI/R^2 (R the mean radius)
+    double rest_tolerance = 1e-2; // rest criterion: largest unbalanced vertex force over the particle weight
+    double wall_speed = 1e-3; // top-wall speed V over R omega_2 (omega_2: ovalisation frequency, ring.hpp)
+    double strain_max = 0.3;  // eps = ln(H0/H) at the end of loading
+    // ... or earlier, when sigma reaches stress_max sigma*: incompressible rings (eta = inf) cannot reach
+    // eps = ln(H0/H) > ln(V0/V_s) and a stiff sample would overlap its contacts first (exit 3).
+    double stress_max = 50;
+    int records = 100; // recorded states per half cycle
+};
+
+// Step (1): centres of frictionless disks (outer radii, unit weight each) at rest under gravity in a box of
+// the given width (walls x = 0, x = width, y = 0), released from a jittered lattice drawn from `seed`.
+struct DiskPacking
+{
+    std::vector<Vec2> centres;
+    double top = 0; // highest point of the disks [m]
+    long iterations = 0;
+};
+DiskPacking deposit_disks(const std::vector<double>& radii, double width, std::uint64_t seed);
+
+// Steps (1)-(2): the rings at rest under gravity.
+struct Deposit
+{
+    Assembly assembly;
+    DiskPacking disks;
+    double weight = 0;         // particle weight m_p g [N]
+    long steps = 0;            // steps of the soft relaxation
+    double residual_force = 0; // largest unbalanced vertex force at rest [N]
+    double bottom_force = 0;   // vertical force on the bottom wall at rest [N]
+};
+Deposit deposit(const CompactionSetup& setup);
+
+// Width of the box: a square sample at the packing fraction 0.82 of random disk packings,
+// W = sqrt(n pi <R^2> / 0.82) (decision spd-compaction-box).
+double compaction_box_width(const std::vector<double>& radii);
+
+// Area of particle `shell` with its shell thickness: polygon area + perimeter r + pi r^2 [m^2].
+double solid_area(const ShellModel& model, int shell);
+
+struct CompactionState
+{
+    double strain;         // ln(H0/H)
+    double height;         // H [m]
+    double force_top;      // vertical force of the particles on the top wall (upwards) [N]
+    double force_bottom;   // on the bottom wall (downwards) [N]
+    double solid_area;     // sum of solid_area [m^2]
+    double kinetic_energy; // [J]
+    bool loading;
+};
+
+struct CompactionResult
+{
+    Deposit deposit;
+    double height0 = 0, width = 0; // H0, W [m]
+    double solid_area0 = 0;        // V_s / s at H0 [m^2]
+    std::vector<CompactionState> states;
+    // At the end of loading: vertex positions of each particle and its elastic energy W_i [J].
+    std::vector<std::vector<Vec2>> snapshot;
+    std::vector<double> snapshot_energy;
+    double dt = 0, wall_speed = 0; // [s], [m/s]
+    long steps = 0;
+};
+// observe(model, state) is called at each recorded state (for checks); progress(fraction) as it runs.
+CompactionResult compaction(const CompactionSetup& setup,
+                            const std::function<void(const Assembly&, const CompactionState&)>& observe,
+                            const std::function<void(double)>& progress);
+
+} // namespace softgrain::spd
