@@ -61,7 +61,7 @@ struct Deposit
 Deposit deposit(const CompactionSetup& setup);
 
 // Width of the box: a square sample at the packing fraction 0.82 of random disk packings,
-// W = sqrt(n pi <R^2> / 0.82) (decision spd-compaction-box).
+// W = sqrt(n pi <R^2> / 0.82) (decision spd-compaction-parameters).
 double compaction_box_width(const std::vector<double>& radii);
 
 // Area of particle `shell` with its shell thickness: polygon area + perimeter r + pi r^2 [m^2].
