@@ -162,18 +162,27 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     }
     const auto [e0_fit, slope] = least_squares_line(log_sigma, e_fit);
     auto& snapshot = ctx.table(
-        "snapshot.dat", {{"particle", "1", "particle index"},
-                         {"x_over_R", "1", "vertex position over the mean radius (closed polygon)"},
-                         {"y_over_R", "1", "vertex position"},
-                         {"W_over_mean", "1", "elastic energy W_i of the particle over <W> (Fig. 29)"}});
-    double W_mean = 0;
-    for (double w : r.snapshot_energy)
-        W_mean += w / static_cast<double>(r.snapshot_energy.size());
-    for (std::size_t i = 0; i < r.snapshot.size(); ++i)
-        for (std::size_t k = 0; k <= r.snapshot[i].size(); ++k) {
-            const Vec2& x = r.snapshot[i][k % r.snapshot[i].size()];
-            snapshot.row({double(i), x.x() / R, x.y() / R, r.snapshot_energy[i] / W_mean});
-        }
+        "snapshot.dat",
+        {{"snapshot", "1", "0: first contact of the top wall (H0), ..., last: end of loading (Figs. 26, 29)"},
+         {"eps", "1", "ln(H0/H) of the snapshot"},
+         {"H_over_R", "1", "top-wall height over the mean radius"},
+         {"particle", "1", "particle index"},
+         {"x_over_R", "1", "vertex position over the mean radius (closed polygon)"},
+         {"y_over_R", "1", "vertex position"},
+         {"W_over_mean", "1", "elastic energy W_i of the particle over <W> of the snapshot (Fig. 29)"}});
+    for (std::size_t n = 0; n < r.snapshots.size(); ++n) {
+        const CompactionSnapshot& snap = r.snapshots[n];
+        double W_mean = 0;
+        for (double w : snap.energy)
+            W_mean += w / static_cast<double>(snap.energy.size());
+        for (std::size_t i = 0; i < snap.particles.size(); ++i)
+            for (std::size_t k = 0; k <= snap.particles[i].size(); ++k) {
+                const Vec2& x = snap.particles[i][k % snap.particles[i].size()];
+                // NaN only if no ring is deformed at all (W_mean = 0).
+                snapshot.row({double(n), snap.strain, snap.height / R, double(i), x.x() / R, x.y() / R,
+                              W_mean > 0 ? snap.energy[i] / W_mean : NAN});
+            }
+    }
     const auto or_null = [](double v) {
         return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
     };

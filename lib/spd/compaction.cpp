@@ -235,6 +235,21 @@ CompactionResult compaction(const CompactionSetup& setup,
         result.states.push_back(state(loading));
         observe(a, result.states.back());
     };
+    const auto take_snapshot = [&] {
+        CompactionSnapshot snap;
+        snap.height = wall_height(a, a.top);
+        snap.strain = std::log(result.height0 / snap.height);
+        for (int p : a.particles) {
+            const Shell& s = model.shells()[p];
+            std::vector<Vec2> vertices;
+            for (int i = s.first; i < s.first + s.count; ++i)
+                vertices.push_back(model.vertex(i));
+            snap.particles.push_back(std::move(vertices));
+            snap.energy.push_back(model.elastic_energy(p));
+        }
+        result.snapshots.push_back(std::move(snap));
+    };
+    double next_snapshot = setup.strain_max / 3; // Fig. 26: thirds of the loading
     // One half cycle: the top wall at `speed` until the height passes `target`; the last step is shortened
     // by placing the wall exactly at the target.
     const double force_cap =
@@ -247,6 +262,10 @@ CompactionResult compaction(const CompactionSetup& setup,
             if (last) model.translate(a.top, Vec2(0, target - H - speed * result.dt));
             model.step(result.dt, 0.0);
             if (loading && model.contact_force_on(a.top).y() >= force_cap) last = true; // stress cap
+            if (loading && !last && std::log(result.height0 / wall_height(a, a.top)) >= next_snapshot) {
+                take_snapshot();
+                next_snapshot += setup.strain_max / 3;
+            }
             if (last || n % interval == 0) record(loading);
             if (n % interval == 0) progress(progress_offset + 0.5 * static_cast<double>(n) / half_steps);
             if (last) break;
@@ -254,15 +273,9 @@ CompactionResult compaction(const CompactionSetup& setup,
         model.set_velocity(a.top, Vec2::Zero());
     };
     record(true);
+    take_snapshot();
     drive(-result.wall_speed, H_min, true, 0.0);
-    for (int p : a.particles) {
-        const Shell& s = model.shells()[p];
-        std::vector<Vec2> vertices;
-        for (int i = s.first; i < s.first + s.count; ++i)
-            vertices.push_back(model.vertex(i));
-        result.snapshot.push_back(std::move(vertices));
-        result.snapshot_energy.push_back(model.elastic_energy(p));
-    }
+    take_snapshot();
     drive(result.wall_speed, result.height0, false, 0.5);
     result.steps = model.steps();
     return result;

@@ -78,15 +78,22 @@ struct CompactionState
     bool loading;
 };
 
+// The sample at one instant: vertex positions of each particle and its elastic energy W_i [J].
+struct CompactionSnapshot
+{
+    double strain = 0, height = 0; // ln(H0/H), H [m]
+    std::vector<std::vector<Vec2>> particles;
+    std::vector<double> energy;
+};
+
 struct CompactionResult
 {
     Deposit deposit;
     double height0 = 0, width = 0; // H0, W [m]
     double solid_area0 = 0;        // V_s / s at H0 [m^2]
     std::vector<CompactionState> states;
-    // At the end of loading: vertex positions of each particle and its elastic energy W_i [J].
-    std::vector<std::vector<Vec2>> snapshot;
-    std::vector<double> snapshot_energy;
+    // Snapshots of the loading at H0, eps_max/3, 2 eps_max/3 and its end (Fig. 26; the last is Fig. 29).
+    std::vector<CompactionSnapshot> snapshots;
     double dt = 0, wall_speed = 0; // [s], [m/s]
     long steps = 0;
 };

@@ -15,7 +15,10 @@ do for [k=1:3] {
     file = word(rundirs, k).'/snapshot.dat'
     stats file using "particle" nooutput
     n = int(STATS_max) + 1
-    plot for [p=0:n-1] file using (column("particle") == p ? column("x_over_R") : NaN):"y_over_R":(column("W_over_mean") > 1 ? column("W_over_mean") : 1) with filledcurves closed fc palette lw 0.5 notitle, \
-         for [p=0:n-1] file using (column("particle") == p ? column("x_over_R") : NaN):"y_over_R" with lines lc rgb '#333333' lw 0.8 notitle
+    stats file using "snapshot" nooutput
+    last = int(STATS_max) # the end of loading
+    at(p) = column("snapshot") == last && column("particle") == p ? column("x_over_R") : NaN
+    plot for [p=0:n-1] file using (at(p)):"y_over_R":(column("W_over_mean") > 1 ? column("W_over_mean") : 1) with filledcurves closed fc palette lw 0.5 notitle, \
+         for [p=0:n-1] file using (at(p)):"y_over_R" with lines lc rgb '#333333' lw 0.8 notitle
 }
 unset multiplot
