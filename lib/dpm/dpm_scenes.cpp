@@ -4,6 +4,7 @@
 #include "dpm/boundary_jam_scene.hpp"
 #include "dpm/box_compress_scene.hpp"
 #include "dpm/compress_scene.hpp"
+#include "dpm/crystal_scene.hpp"
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
@@ -30,6 +31,11 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, analytic "
               "against Monte-Carlo, term by term (Table 9.2)",
               dpm::packing_fraction_parameters(), dpm::run_packing_fraction});
+    registry.add(
+        Scene{"dpm.crystal_modes",
+              "DPM eq. (9.28), Fig. 9.5(a): modes of a compressed triangular soft-disk crystal against "
+              "its exact phonon spectrum; the displacement field of one mode",
+              dpm::crystal_modes_parameters(), dpm::run_crystal_modes});
     registry.add(
         Scene{"dpm.jam",
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
