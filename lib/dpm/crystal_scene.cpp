@@ -13,24 +13,6 @@
 
 namespace softgrain::dpm {
 
-namespace {
-
-// Participation ratio (sum_i |u_i|^2)^2 / (N sum_i |u_i|^4) of a mode over N particles: about 1 for a
-// plane wave, of order 1/N for a mode localised on a few particles (Fig. 9.5b's quasi-localised mode).
-double participation_ratio(const Eigen::VectorXd& mode)
-{
-    const Eigen::Index N = mode.size() / 2;
-    double s2 = 0, s4 = 0;
-    for (Eigen::Index i = 0; i < N; ++i) {
-        const double u2 = mode.segment<2>(2 * i).squaredNorm();
-        s2 += u2;
-        s4 += u2 * u2;
-    }
-    return s2 * s2 / (static_cast<double>(N) * s4);
-}
-
-} // namespace
-
 void run_crystal_modes(const Parameters& p, RunContext& context)
 {
     const int n = static_cast<int>(p.integer("rows"));

@@ -73,4 +73,16 @@ double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, co
     return total_energy(system, moved, nullptr, nullptr) - total_energy(system, x, nullptr, nullptr);
 }
 
+double participation_ratio(const Eigen::VectorXd& mode)
+{
+    const Eigen::Index N = mode.size() / 2;
+    double s2 = 0, s4 = 0;
+    for (Eigen::Index i = 0; i < N; ++i) {
+        const double u2 = mode.segment<2>(2 * i).squaredNorm();
+        s2 += u2;
+        s4 += u2 * u2;
+    }
+    return s2 * s2 / (static_cast<double>(N) * s4);
+}
+
 } // namespace softgrain::dpm

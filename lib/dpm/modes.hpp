@@ -26,6 +26,10 @@ ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x
 
 // Number of eigenvalues below the threshold (in the same units).
 int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
+// Participation ratio (sum_i |u_i|^2)^2 / (N sum_i |u_i|^4) of a mode over its N vertices: about 1 for a
+// plane wave (2/3 for a standing one), of order 1/N for a mode on a few vertices (Fig. 9.5b's quasi-localised
+// mode).
+double participation_ratio(const Eigen::VectorXd& mode);
 
 // FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);

@@ -75,6 +75,18 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
     }
 
     auto& s = context.summary();
+    // The lowest non-zero mode (Fig. 9.5b-d): its field and how many vertices it involves.
+    if (zero < lambda.size()) {
+        const Eigen::VectorXd u = modes.eigenvectors.col(zero);
+        auto& field = context.table("lowest_mode.dat",
+                                    {{"x", "sqrt(a0) or sigma", "vertex position"},
+                                     {"y", "sqrt(a0) or sigma", "vertex position"},
+                                     {"ux", "1", "eigenvector of the lowest non-zero mode (unit norm)"},
+                                     {"uy", "1", "eigenvector component"}});
+        for (Eigen::Index i = 0; i < u.size() / 2; ++i)
+            field.row({x(2 * i), x(2 * i + 1), u(2 * i), u(2 * i + 1)});
+        s["participation_ratio_lowest"] = participation_ratio(u);
+    }
     s["zero_modes"] = zero;
     s["degrees_of_freedom"] = x.size();
     s["spectrum_seconds"] = spectrum_seconds; // cost chart (dpm-cost), reported, never asserted
@@ -127,6 +139,9 @@ void run_modes(const Parameters& p, RunContext& context)
         run_packing_modes(p, context);
         return;
     }
+    if (p.choice("model") == "smooth_disk")
+        throw InputError("model = smooth_disk with particles = 1: a single disk has only its translations; "
+                         "allowed: smooth_disk with particles > 1 (a jammed packing)");
     const int n = static_cast<int>(p.integer("nodes"));
     const ShapeModel model = shape_model_from_name(p.choice("model"));
     const double a_min = minimum_shape_parameter(n);
@@ -160,8 +175,8 @@ void run_modes(const Parameters& p, RunContext& context)
 std::vector<ParameterSpec> modes_parameters()
 {
     return {
-        ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension"},
-                              "particle type of Table 9.1"),
+        ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension", "smooth_disk"},
+                              "particle type of Table 9.1, or smooth bidisperse disks (packings only)"),
         ParameterSpec::integer("nodes", 10, "1", "vertices N_mu of the particle").at_least(3),
         ParameterSpec::integer(
             "particles", 1, "1",
