@@ -3,9 +3,12 @@
 #include "core/errors.hpp"
 #include "core/output.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 #include <toml++/toml.h>
@@ -93,12 +96,46 @@ void apply_overrides(Parameters& parameters, const std::vector<std::string>& ass
     }
 }
 
+// How a run keeps checkpoints: `--checkpoint-every` seconds of wall time (absent: every 10 minutes for the
+// scenes that write them), `--resume` from DIR/<name>.checkpoint if it exists.
+struct CheckpointRequest
+{
+    std::optional<double> every_seconds;
+    bool resume = false;
+};
+
+std::unique_ptr<Checkpoints> checkpoints_for(const Scene& scene, const RunRequest& request,
+                                             const CheckpointRequest& asked, const fs::path& out_dir,
+                                             const SceneRegistry& scenes)
+{
+    if (!scene.checkpoints) {
+        if (!asked.every_seconds && !asked.resume) return nullptr;
+        std::string allowed;
+        for (const auto& s : scenes.all())
+            if (s.checkpoints) allowed += (allowed.empty() ? "" : ", ") + s.name;
+        throw InputError(std::string(asked.resume ? "--resume" : "--checkpoint-every") + ": scene '" +
+                         scene.name + "' does not write checkpoints; allowed for: " + allowed);
+    }
+    const double every = asked.every_seconds.value_or(600.0);
+    if (!(every >= 0) || !std::isfinite(every))
+        throw InputError("--checkpoint-every " + std::to_string(every) +
+                         ": allowed: seconds of wall time between checkpoints, >= 0 (0: none)");
+    const fs::path file = out_dir / (request.output_name + ".checkpoint");
+    if (asked.resume && !fs::exists(file))
+        std::cerr << "softgrain: no checkpoint " << file.string() << ": starting from the beginning\n";
+    return std::make_unique<Checkpoints>(file, every, asked.resume, scene.name,
+                                         request.parameters.to_json().dump(), software_version());
+}
+
 int run_scene(const std::string& target, const std::vector<std::string>& assignments,
-              const std::string& out_dir, bool quiet, const SceneRegistry& scenes)
+              const std::string& out_dir, bool quiet, const CheckpointRequest& checkpointing,
+              const SceneRegistry& scenes)
 {
     RunRequest request = resolve_scene(target, scenes);
     apply_overrides(request.parameters, assignments);
+    auto checkpoints = checkpoints_for(*request.scene, request, checkpointing, out_dir, scenes);
     RunContext context(out_dir, request.output_name, request.parameters, quiet);
+    context.enable_checkpoints(std::move(checkpoints));
     request.scene->run(request.parameters, context);
     const fs::path written = context.commit();
     if (!quiet) std::cout << "wrote " << written.string() << "\n";
@@ -128,6 +165,12 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     run->add_option("--set", assignments, "override a parameter: key=value (repeatable)")->take_all();
     run->add_option("--out", out_dir, "output directory; results go to DIR/<scene>/")->capture_default_str();
     run->add_flag("--quiet", quiet, "no progress or messages on success");
+    CheckpointRequest checkpointing;
+    run->add_option("--checkpoint-every", checkpointing.every_seconds,
+                    "seconds of wall time between checkpoints DIR/<scene>.checkpoint of a long run (default "
+                    "600; 0: none)");
+    run->add_flag("--resume", checkpointing.resume,
+                  "continue from DIR/<scene>.checkpoint (bit-for-bit) if it exists, else start afresh");
 
     try {
         app.parse(argc, argv);
@@ -142,7 +185,7 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
         else if (*describe)
             describe_scene(scenes.find(describe_name));
         else if (*run)
-            return run_scene(run_target, assignments, out_dir, quiet, scenes);
+            return run_scene(run_target, assignments, out_dir, quiet, checkpointing, scenes);
         return exit_success;
     } catch (const InputError& e) {
         std::cerr << "softgrain: bad input: " << e.what() << "\n";

@@ -34,6 +34,20 @@ class NeighbourList
     // x_j - x_i, by the minimum image in a periodic box.
     Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const;
 
+    // Writes or reads the whole list for a checkpoint (core/checkpoint.hpp): a resumed run rebuilds it at the
+    // same steps as an uninterrupted one.
+    template <class Archive>
+    void transfer(Archive& archive)
+    {
+        archive(cutoff_);
+        archive(skin_);
+        archive(box_);
+        archive(reference_positions_);
+        archive(pairs_);
+        archive(builds_);
+        archive(distance_evaluations_);
+    }
+
   private:
     void build(const Points<Dim>& positions);
     bool needs_rebuild(const Points<Dim>& positions) const;

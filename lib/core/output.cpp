@@ -140,9 +140,15 @@ fs::path RunContext::commit()
     summary_["software_version"] = software_version();
     summary_["wall_time_s"] = wall;
     summary_["steps"] = steps_;
+    // A resumed run's wall time covers only this process, its steps the whole run: no honest ratio.
+    const bool resumed = checkpoints_ && checkpoints_->resumed();
     summary_["time_per_step_s"] =
-        steps_ > 0 ? nlohmann::json(wall / static_cast<double>(steps_)) : nlohmann::json();
+        steps_ > 0 && !resumed ? nlohmann::json(wall / static_cast<double>(steps_)) : nlohmann::json();
     summary_["peak_memory_mib"] = peak_memory_mib();
+    if (checkpoints_) {
+        summary_["checkpoints_written"] = checkpoints_->saved();
+        summary_["resumed_from_checkpoint"] = checkpoints_->resumed();
+    }
     {
         std::ofstream out(partial_dir_ / "summary.json");
         out << summary_.dump(2) << "\n";
@@ -152,6 +158,7 @@ fs::path RunContext::commit()
     fs::remove_all(final_dir_);
     fs::rename(partial_dir_, final_dir_);
     committed_ = true;
+    if (checkpoints_) checkpoints_->discard();
     return final_dir_;
 }
 

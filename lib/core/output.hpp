@@ -8,6 +8,7 @@
 // gnuplot reads it directly: `set datafile columnheaders; plot "f.dat" using "t":"x"`.
 #pragma once
 
+#include "core/checkpoint.hpp"
 #include "core/parameters.hpp"
 
 #include <chrono>
@@ -80,6 +81,14 @@ class RunContext
     Table& table(const std::string& file_name, const std::vector<Column>& columns);
     Progress progress(const std::string& label) const { return Progress(label, !quiet_); }
 
+    // Checkpoints of a scene that writes them (Scene::checkpoints), else nullptr. A committed run removes
+    // its checkpoint.
+    void enable_checkpoints(std::unique_ptr<Checkpoints> checkpoints)
+    {
+        checkpoints_ = std::move(checkpoints);
+    }
+    Checkpoints* checkpoints() { return checkpoints_.get(); }
+
     // Time steps (or minimiser iterations) taken; with the wall time they give the cost per step.
     void count_steps(std::int64_t steps) { steps_ += steps; }
     void record_seed(std::uint64_t seed) { summary_["seed"] = seed; }
@@ -99,6 +108,7 @@ class RunContext
     std::vector<std::unique_ptr<Table>> tables_;
     std::int64_t steps_ = 0;
     std::chrono::steady_clock::time_point start_;
+    std::unique_ptr<Checkpoints> checkpoints_;
 };
 
 } // namespace softgrain

@@ -21,6 +21,8 @@ struct Scene
     std::string description; // one line
     std::vector<ParameterSpec> parameters;
     std::function<void(const Parameters&, RunContext&)> run;
+    // Long runs write checkpoints and can be resumed (RunContext::checkpoints, `run --resume`).
+    bool checkpoints = false;
 };
 
 class SceneRegistry

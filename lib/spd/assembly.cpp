@@ -1,5 +1,6 @@
 #include "spd/assembly.hpp"
 
+#include "core/checkpoint.hpp"
 #include "core/rng.hpp"
 
 #include <algorithm>
@@ -71,6 +72,17 @@ int particle_vertices(const Assembly& assembly)
     for (int p : assembly.particles)
         n += assembly.model.shells()[p].count;
     return n;
+}
+
+void transfer(Archive& archive, Assembly& assembly)
+{
+    archive(assembly.model);
+    archive(assembly.particles);
+    archive(assembly.radii);
+    for (int* wall : {&assembly.bottom, &assembly.top, &assembly.left, &assembly.right})
+        archive(*wall);
+    archive(assembly.width);
+    archive(assembly.height);
 }
 
 } // namespace softgrain::spd

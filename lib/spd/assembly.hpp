@@ -32,6 +32,8 @@ struct Assembly
     double width = 0, height = 0; // inner box size between the wall lines [m]
 };
 Assembly rings_in_box(const AssemblySetup& setup, int columns);
+// Writes or reads an assembly for a checkpoint (core/checkpoint.hpp).
+void transfer(Archive& archive, Assembly& assembly);
 
 // The ring radii of a setup: R (1 + spread g), g drawn from `seed` (decision spd-polydispersity).
 std::vector<double> ring_radii(const AssemblySetup& setup);

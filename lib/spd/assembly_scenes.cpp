@@ -108,7 +108,8 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     const double R = ring.radius, s_depth = ring.material.s, sigma_star = sc.characteristic.sigma_star;
     auto progress = ctx.progress("spd.compaction");
     const CompactionResult r = compaction(
-        setup, [](const Assembly&, const CompactionState&) {}, [&](double f) { progress.update(f); });
+        setup, [](const Assembly&, const CompactionState&) {}, [&](double f) { progress.update(f); },
+        ctx.checkpoints());
     // Quasi-static check: largest |F_top - F_bottom| over the loading, relative to the largest top force.
     double mismatch = 0, force_max = 0;
     for (const CompactionState& st : r.states)
@@ -272,7 +273,8 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
                 .positive(),
             ParameterSpec::integer("seed", 1, "1", "seed of the radii and of the deposition").non_negative(),
         },
-        run_compaction});
+        run_compaction,
+        /*checkpoints=*/true});
 }
 
 } // namespace softgrain

@@ -1,5 +1,6 @@
 #include "spd/compaction.hpp"
 
+#include "core/checkpoint.hpp"
 #include "core/errors.hpp"
 #include "core/fire.hpp"
 #include "core/geometry.hpp"
@@ -144,7 +145,7 @@ DiskPacking deposit_disks(const std::vector<double>& radii, double width, std::u
     return packing;
 }
 
-Deposit deposit(const CompactionSetup& setup)
+Deposit place_rings(const CompactionSetup& setup)
 {
     const std::vector<double> radii = ring_radii(setup.assembly);
     const RingScales sc = ring_scales(setup.assembly.ring);
@@ -168,30 +169,52 @@ Deposit deposit(const CompactionSetup& setup)
         for (int i = s.first; i < s.first + s.count; ++i)
             model.set_applied_force(i, Vec2(0, -d.weight / nodes));
     }
-    const double dt = setup.assembly.ring.dt_factor * model.critical_time_step();
-    model.check_time_step(dt);
+    d.dt = setup.assembly.ring.dt_factor * model.critical_time_step();
+    model.check_time_step(d.dt);
+    return d;
+}
+
+void settle(const CompactionSetup& setup, Deposit& d, const std::function<void(const Deposit&)>& after_check)
+{
+    ShellModel& model = d.assembly.model;
     // Damped relaxation (decision spd-compaction-deposition): global viscous damping 5% of the critical
     // damping of the ovalisation mode, 2 m omega_2 (ring_damping), so that the rings still fall and rearrange
     // (rigid-body motion is not over-damped); budget 4000 ovalisation periods.
     const double omega2 = ring_damping(setup.assembly.ring) / (2 * setup.assembly.ring.vertex_mass);
-    const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * dt));
-    d.steps =
-        relax(model, dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight, budget);
+    const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * d.dt));
+    d.steps = relax(model, d.dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight,
+                    budget, d.steps, [&](long n) {
+                        d.steps = n;
+                        if (after_check) after_check(d);
+                    });
     d.residual_force = model.max_free_force();
     d.bottom_force = -model.contact_force_on(d.assembly.bottom).y();
+}
+
+Deposit deposit(const CompactionSetup& setup)
+{
+    Deposit d = place_rings(setup);
+    settle(setup, d, {});
     return d;
 }
 
-CompactionResult compaction(const CompactionSetup& setup,
-                            const std::function<void(const Assembly&, const CompactionState&)>& observe,
-                            const std::function<void(double)>& progress)
+namespace {
+// Where a compaction run is: its stage, the steps taken in that stage and the strain of the next snapshot.
+// With the result so far (which holds the model), this is the whole state of a checkpoint.
+struct Stage
 {
-    CompactionResult result;
-    result.deposit = deposit(setup);
+    enum Name : std::int32_t { settling, loading, unloading, done } name = settling;
+    long steps = 0;
+    double next_snapshot = 0;
+};
+
+// Gravity off, plasticity on with the set's laws, the top wall in contact with the highest ring (H = H0),
+// the time step and wall speed of the loading.
+void start_loading(const CompactionSetup& setup, CompactionResult& result)
+{
     Assembly& a = result.deposit.assembly;
     ShellModel& model = a.model;
     const RingSetup& ring = setup.assembly.ring;
-    // Gravity off, plasticity on, the set's laws from now on.
     for (int p : a.particles) {
         const Shell& s = model.shells()[p];
         for (int i = s.first; i < s.first + s.count; ++i)
@@ -201,22 +224,35 @@ CompactionResult compaction(const CompactionSetup& setup,
         model.set_laws(p, ring_scales(own).laws);
     }
     model.stop();
-    // Top wall in contact with the highest ring: H = H0.
     result.height0 = top_of_particles(a);
     model.translate(a.top, Vec2(0, result.height0 - wall_height(a, a.top)));
     result.width = a.width;
     result.solid_area0 = 0;
     for (int p : a.particles)
         result.solid_area0 += solid_area(model, p);
-
     result.dt = ring.dt_factor * model.critical_time_step();
     model.check_time_step(result.dt);
     const double omega2 = ring_damping(ring) / (2 * ring.vertex_mass);
     result.wall_speed = setup.wall_speed * ring.radius * omega2;
-    const double H_min = result.height0 * std::exp(-setup.strain_max);
-    const long half_steps =
-        static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
-    const long interval = std::max(1L, half_steps / setup.records);
+}
+} // namespace
+
+CompactionResult compaction(const CompactionSetup& setup,
+                            const std::function<void(const Assembly&, const CompactionState&)>& observe,
+                            const std::function<void(double)>& progress, Checkpoints* checkpoints)
+{
+    CompactionResult result;
+    Stage stage;
+    const auto whole_state = [&](Archive& archive) {
+        archive(result);
+        archive(stage);
+    };
+    const auto checkpoint = [&] {
+        if (checkpoints && checkpoints->due()) checkpoints->save(whole_state);
+    };
+    if (!checkpoints || !checkpoints->resume(whole_state)) result.deposit = place_rings(setup);
+    Assembly& a = result.deposit.assembly;
+    ShellModel& model = a.model;
 
     const auto state = [&](bool loading) {
         CompactionState st;
@@ -249,36 +285,89 @@ CompactionResult compaction(const CompactionSetup& setup,
         }
         result.snapshots.push_back(std::move(snap));
     };
-    double next_snapshot = setup.strain_max / 3; // Fig. 26: thirds of the loading
+    if (stage.name == Stage::settling) {
+        settle(setup, result.deposit, [&](const Deposit&) { checkpoint(); });
+        start_loading(setup, result);
+        stage = {Stage::loading, 0, setup.strain_max / 3}; // Fig. 26: thirds of the loading
+        record(true);
+        take_snapshot();
+    }
+
+    const RingSetup& ring = setup.assembly.ring;
+    const double H_min = result.height0 * std::exp(-setup.strain_max);
+    const long half_steps =
+        static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
+    const long interval = std::max(1L, half_steps / setup.records);
     // One half cycle: the top wall at `speed` until the height passes `target`; the last step is shortened
-    // by placing the wall exactly at the target.
+    // by placing the wall exactly at the target. It continues after the stage's steps already taken.
     const double force_cap =
         setup.stress_max * ring_scales(ring).characteristic.sigma_star * a.width * ring.material.s;
     const auto drive = [&](double speed, double target, bool loading, double progress_offset) {
         model.set_velocity(a.top, Vec2(0, speed));
-        for (long n = 1;; ++n) {
+        for (long n = stage.steps + 1;; ++n) {
             const double H = wall_height(a, a.top);
             bool last = speed < 0 ? H + speed * result.dt <= target : H + speed * result.dt >= target;
             if (last) model.translate(a.top, Vec2(0, target - H - speed * result.dt));
             model.step(result.dt, 0.0);
             if (loading && model.contact_force_on(a.top).y() >= force_cap) last = true; // stress cap
-            if (loading && !last && std::log(result.height0 / wall_height(a, a.top)) >= next_snapshot) {
+            if (loading && !last && std::log(result.height0 / wall_height(a, a.top)) >= stage.next_snapshot) {
                 take_snapshot();
-                next_snapshot += setup.strain_max / 3;
+                stage.next_snapshot += setup.strain_max / 3;
             }
             if (last || n % interval == 0) record(loading);
             if (n % interval == 0) progress(progress_offset + 0.5 * static_cast<double>(n) / half_steps);
+            stage.steps = n;
             if (last) break;
+            checkpoint();
         }
         model.set_velocity(a.top, Vec2::Zero());
     };
-    record(true);
-    take_snapshot();
-    drive(-result.wall_speed, H_min, true, 0.0);
-    take_snapshot();
-    drive(result.wall_speed, result.height0, false, 0.5);
+    if (stage.name == Stage::loading) {
+        drive(-result.wall_speed, H_min, true, 0.0);
+        take_snapshot();
+        stage = {Stage::unloading, 0, stage.next_snapshot};
+    }
+    if (stage.name == Stage::unloading) {
+        drive(result.wall_speed, result.height0, false, 0.5);
+        stage.name = Stage::done;
+    }
     result.steps = model.steps();
     return result;
+}
+
+void transfer(Archive& archive, DiskPacking& packing)
+{
+    archive(packing.centres);
+    archive(packing.top);
+    archive(packing.iterations);
+}
+
+void transfer(Archive& archive, Deposit& deposit)
+{
+    archive(deposit.assembly);
+    archive(deposit.disks);
+    for (double* value : {&deposit.weight, &deposit.dt, &deposit.residual_force, &deposit.bottom_force})
+        archive(*value);
+    archive(deposit.steps);
+}
+
+void transfer(Archive& archive, CompactionSnapshot& snapshot)
+{
+    archive(snapshot.strain);
+    archive(snapshot.height);
+    archive(snapshot.particles);
+    archive(snapshot.energy);
+}
+
+void transfer(Archive& archive, CompactionResult& result)
+{
+    archive(result.deposit);
+    for (double* value :
+         {&result.height0, &result.width, &result.solid_area0, &result.dt, &result.wall_speed})
+        archive(*value);
+    archive(result.states);
+    archive(result.snapshots);
+    archive(result.steps);
 }
 
 } // namespace softgrain::spd

@@ -23,6 +23,10 @@
 #include <functional>
 #include <vector>
 
+namespace softgrain {
+class Checkpoints;
+}
+
 namespace softgrain::spd {
 
 struct CompactionSetup
@@ -54,11 +58,17 @@ struct Deposit
     Assembly assembly;
     DiskPacking disks;
     double weight = 0;         // particle weight m_p g [N]
+    double dt = 0;             // time step of the soft relaxation [s]
     long steps = 0;            // steps of the soft relaxation
     double residual_force = 0; // largest unbalanced vertex force at rest [N]
     double bottom_force = 0;   // vertical force on the bottom wall at rest [N]
 };
 Deposit deposit(const CompactionSetup& setup);
+// Step (1) and the rings placed at the disk centres under gravity, not yet relaxed (steps = 0).
+Deposit place_rings(const CompactionSetup& setup);
+// Step (2): relaxes a placed deposit, continuing after `d.steps` steps already taken; after_check(d) is
+// called at each unsuccessful rest check (where a checkpoint may be written).
+void settle(const CompactionSetup& setup, Deposit& d, const std::function<void(const Deposit&)>& after_check);
 
 // Width of the box: a square sample at the packing fraction 0.82 of random disk packings,
 // W = sqrt(n pi <R^2> / 0.82) (decision spd-compaction-parameters).
@@ -98,8 +108,16 @@ struct CompactionResult
     long steps = 0;
 };
 // observe(model, state) is called at each recorded state (for checks); progress(fraction) as it runs.
+// With `checkpoints`, the run writes its whole state when one is due and, if asked to, starts from the last
+// one: the result is the same, bit for bit, as that of an uninterrupted run.
 CompactionResult compaction(const CompactionSetup& setup,
                             const std::function<void(const Assembly&, const CompactionState&)>& observe,
-                            const std::function<void(double)>& progress);
+                            const std::function<void(double)>& progress, Checkpoints* checkpoints = nullptr);
+
+// Write or read the protocol's records for a checkpoint (core/checkpoint.hpp).
+void transfer(Archive& archive, DiskPacking& packing);
+void transfer(Archive& archive, Deposit& deposit);
+void transfer(Archive& archive, CompactionSnapshot& snapshot);
+void transfer(Archive& archive, CompactionResult& result);
 
 } // namespace softgrain::spd

@@ -1,5 +1,6 @@
 #include "spd/shell_model.hpp"
 
+#include "core/checkpoint.hpp"
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "core/integrators.hpp"
@@ -566,11 +567,52 @@ Vec2 ShellModel::contact_force_on(int shell) const
 
 namespace softgrain::spd {
 
-long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps)
+void ShellModel::Candidate::transfer(Archive& archive)
 {
-    for (long n = 1; n <= max_steps; ++n) {
+    archive(vertex);
+    archive(a);
+    archive(b);
+    archive(friction);
+    archive(active);
+    archive(overlap);
+    archive(fn);
+    archive(w_a);
+    archive(w_b);
+    archive(distance);
+    archive(force);
+}
+
+void ShellModel::transfer(Archive& archive)
+{
+    archive(shells_);
+    for (Eigen::VectorXd* state : {&x_, &v_, &f_, &inverse_mass_, &applied_, &contact_force_})
+        archive(*state);
+    for (std::vector<double>* history : {&length_prev_, &axial_, &angle_prev_, &torque_, &core_V_prev_,
+                                         &core_p_, &core_V0_, &contact_normal_})
+        archive(*history);
+    archive(shell_of_);
+    archive(candidates_);
+    bool listed = neighbours_.has_value();
+    archive(listed);
+    if (archive.loading()) {
+        neighbours_.reset();
+        if (listed) neighbours_.emplace(1.0, 0.0); // cutoff and skin are read next
+    }
+    if (listed) archive(*neighbours_);
+    archive(list_length_);
+    archive(list_builds_);
+    archive(contact_);
+    archive(steps_);
+}
+
+long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps, long taken,
+           const std::function<void(long)>& after_check)
+{
+    for (long n = taken + 1; n <= max_steps; ++n) {
         model.step(dt, damping);
-        if (n % 16 == 0 && model.max_free_force() < force_tolerance) return n;
+        if (n % 16 != 0) continue;
+        if (model.max_free_force() < force_tolerance) return n;
+        if (after_check) after_check(n);
     }
     std::ostringstream cause;
     cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "

@@ -17,8 +17,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
+
+namespace softgrain {
+class Archive;
+}
 
 namespace softgrain::spd {
 
@@ -130,6 +135,10 @@ class ShellModel
     void translate(int shell, const Vec2& displacement);
     std::int64_t steps() const { return steps_; }
     double min_vertex_mass() const; // over free vertices [kg]
+    // Writes or reads the complete state (positions, velocities, forces, the incremental histories of eqs.
+    // (1)-(4) and (7), the contact list) for a checkpoint (core/checkpoint.hpp).
+    void transfer(Archive& archive);
+
     // Contact detection cost (decision spd-contact-detection): (vertex, element) pairs checked per step, and
     // rebuilds of the vertex neighbour list so far.
     std::size_t contact_candidates() const { return candidates_.size(); }
@@ -174,6 +183,7 @@ class ShellModel
         double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
         double distance = 0;                  // vertex-element distance while active [m]
         Vec2 force = Vec2::Zero();            // force on the vertex [N]
+        void transfer(Archive& archive);
     };
     std::vector<Candidate> candidates_; // sorted by (vertex, a)
     std::optional<NeighbourList<2>> neighbours_;
@@ -189,7 +199,10 @@ class ShellModel
 // Quasi-static relaxation (section 4.1, "complete relaxation after each strain increment"): damped
 // velocity-Verlet steps until the largest unbalanced force on a free degree of freedom (damping excluded)
 // is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice.
-// Returns the number of steps taken.
-long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps);
+// Returns the number of steps taken. A long relaxation can be resumed: `taken` steps were taken before (a
+// multiple of 16), and `after_check(n)` is called after each unsuccessful check with the steps taken so far
+// (where a checkpoint may be written).
+long relax(ShellModel& model, double dt, double damping, double force_tolerance, long max_steps,
+           long taken = 0, const std::function<void(long)>& after_check = {});
 
 } // namespace softgrain::spd

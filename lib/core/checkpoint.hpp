@@ -1,0 +1,154 @@
+// Checkpoints of long runs: the complete state of a run in a binary file, so that `softgrain run ...
+// --resume` continues from it bit-for-bit (the same binary and thread count give the same tables as an
+// uninterrupted run).
+//
+// A state is listed once, in a `transfer(Archive&)` member (or a free `transfer(Archive&, T&)` found by
+// argument-dependent lookup) that names each member: the same function writes and reads it, so the two
+// directions cannot drift apart. Trivially copyable values (numbers, enums, structs of numbers) are copied as
+// bytes, Eigen matrices as their sizes and coefficients, containers element by element.
+//
+// File: the line "softgrain checkpoint 1", then the scene name, the parameters (JSON), the software
+// version, the scene's state and an end marker. It is written to a temporary file and renamed into place,
+// so a run killed while writing leaves the previous checkpoint intact.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace softgrain {
+
+class Archive;
+
+template <class T>
+concept MemberTransfer = requires(T& value, Archive& archive)
+{
+    value.transfer(archive);
+};
+template <class T>
+concept FreeTransfer = requires(T& value, Archive& archive)
+{
+    transfer(archive, value);
+};
+
+class Archive
+{
+  public:
+    explicit Archive(std::ofstream& out) : out_(&out) {}
+    explicit Archive(std::ifstream& in) : in_(&in) {}
+
+    bool loading() const { return in_ != nullptr; }
+
+    template <class T>
+    void operator()(T& value)
+    {
+        if constexpr (MemberTransfer<T>)
+            value.transfer(*this);
+        else if constexpr (FreeTransfer<T>)
+            transfer(*this, value);
+        else {
+            static_assert(std::is_trivially_copyable_v<T>, "give this type a transfer(Archive&)");
+            bytes(&value, sizeof(T));
+        }
+    }
+    void operator()(std::string& text);
+    template <class A, class B>
+    void operator()(std::pair<A, B>& pair)
+    {
+        (*this)(pair.first);
+        (*this)(pair.second);
+    }
+    template <class T>
+    void operator()(std::vector<T>& items)
+    {
+        std::uint64_t n = items.size();
+        (*this)(n);
+        if (loading()) items.resize(n);
+        if constexpr (std::is_trivially_copyable_v<T>)
+            bytes(items.data(), n * sizeof(T));
+        else
+            for (T& item : items)
+                (*this)(item);
+    }
+    template <class T>
+    void operator()(std::optional<T>& maybe)
+    {
+        bool present = maybe.has_value();
+        (*this)(present);
+        if (loading()) {
+            if (present)
+                maybe.emplace();
+            else
+                maybe.reset();
+        }
+        if (present) (*this)(*maybe);
+    }
+    template <class Scalar, int Rows, int Cols, int Options, int MaxRows, int MaxCols>
+    void operator()(Eigen::Matrix<Scalar, Rows, Cols, Options, MaxRows, MaxCols>& matrix)
+    {
+        std::int64_t rows = matrix.rows(), cols = matrix.cols();
+        (*this)(rows);
+        (*this)(cols);
+        if (loading()) matrix.resize(rows, cols);
+        bytes(matrix.data(), static_cast<std::size_t>(rows * cols) * sizeof(Scalar));
+    }
+
+    // Writes `value` through its transfer function (which takes a non-const reference so that one function
+    // serves both directions; writing does not modify it).
+    template <class T>
+    void save(const T& value)
+    {
+        (*this)(const_cast<T&>(value));
+    }
+
+  private:
+    void bytes(void* data, std::size_t size);
+    std::ofstream* out_ = nullptr;
+    std::ifstream* in_ = nullptr;
+};
+
+// Where a run keeps its checkpoint and how often it writes one. Scenes that support checkpoints (Scene::
+// checkpoints) call `due()` at points where their state is complete and then `save(...)`; at their start,
+// `resume(...)` restores the last state if the run was asked to resume and a checkpoint exists.
+class Checkpoints
+{
+  public:
+    // file: the checkpoint's path; interval_seconds: wall time between checkpoints (0: never);
+    // identity: scene name, parameters (JSON text) and software version, all of which must match to resume.
+    Checkpoints(std::filesystem::path file, double interval_seconds, bool resume, std::string scene,
+                std::string parameters, std::string version);
+
+    // True once the interval has passed since the start or the last checkpoint.
+    bool due() const;
+    // Writes the state (atomically: temporary file, then rename).
+    void save(const std::function<void(Archive&)>& state);
+    // If resuming and a checkpoint exists: reads the state into the run and returns true. Throws
+    // InputError (exit 2) when the checkpoint belongs to another scene, other parameters or another
+    // version, or is incomplete.
+    bool resume(const std::function<void(Archive&)>& state);
+    // Removes the checkpoint (the run is complete).
+    void discard();
+    const std::filesystem::path& file() const { return file_; }
+    int saved() const { return saved_; }
+    bool resumed() const { return resumed_; }
+
+  private:
+    std::filesystem::path file_;
+    double interval_;
+    bool resume_;
+    std::string scene_, parameters_, version_;
+    mutable std::chrono::steady_clock::time_point last_;
+    int saved_ = 0;
+    bool resumed_ = false;
+};
+
+} // namespace softgrain
