@@ -119,7 +119,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
         }
     mismatch /= force_max;
     progress.finish();
-    ctx.count_steps(r.steps + r.deposit.steps);
+    ctx.count_steps(r.steps); // the model counts the deposit steps too
     const double W = r.width, A0 = r.solid_area0;
     const auto void_ratio = [&](const CompactionState& st) {
         return (W * st.height - st.solid_area) / st.solid_area;
