@@ -206,13 +206,19 @@ void ShellModel::update_contact_candidates()
         if (!sj.rigid) add_adjacent_elements(i, j);
         if (!si.rigid) add_adjacent_elements(j, i);
     }
+    // Walls have few, long elements that a vertex list does not see: each free vertex is paired with the wall
+    // elements within reach + skin (neither moves more than skin/2 before the next rebuild).
+    const double wall_reach = reach + neighbours_->skin();
     for (const Shell& wall : shells_) {
         if (!wall.rigid) continue;
         for (const Shell& s : shells_)
             if (!s.rigid)
                 for (int i = s.first; i < s.first + s.count; ++i)
-                    for (int k = 0; k < wall.elements(); ++k)
-                        fresh.push_back({i, wall.first + k, next(wall, k)});
+                    for (int k = 0; k < wall.elements(); ++k) {
+                        const int a = wall.first + k, b = next(wall, k);
+                        if (point_segment_proximity(vertex(i), vertex(a), vertex(b)).distance < wall_reach)
+                            fresh.push_back({i, a, b});
+                    }
     }
     const auto key = [](const Candidate& c) { return std::make_pair(c.vertex, c.a); };
     std::sort(fresh.begin(), fresh.end(),
@@ -228,6 +234,12 @@ void ShellModel::update_contact_candidates()
         if (old != candidates_.end() && key(*old) == key(c)) c.friction = old->friction;
     }
     candidates_.swap(fresh);
+    contact_groups_.clear();
+    for (std::size_t m = 0; m < candidates_.size(); ++m)
+        if (m == 0 || candidates_[m].vertex != candidates_[m - 1].vertex ||
+            shell_of(candidates_[m].a) != shell_of(candidates_[m - 1].a))
+            contact_groups_.push_back(m);
+    contact_groups_.push_back(candidates_.size());
 }
 
 // Section 2.3: one vertex against one element of another shell (a sphero-segment), written into the
@@ -281,32 +293,28 @@ void ShellModel::evaluate_contact(Candidate& cand, double dt) const
 // adjacent elements and projects inside both; counting both doubles the force there, and the second term
 // vanishes abruptly when the projection leaves its element: a jump of the contact energy that injects
 // energy into a vertex sliding across the corner. The distance to the nearest element is continuous, so is
-// the energy. The candidates are sorted by (vertex, element), so the elements of one shell are contiguous.
-// A friction history dropped here restarts at zero (the scenes of section 5 are frictionless).
-void ShellModel::keep_nearest_elements()
+// the energy. The group [begin, end) holds the candidates of one vertex against the elements of one other
+// shell. A friction history dropped here restarts at zero (the scenes of section 5 are frictionless).
+void ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, double dt)
 {
-    const std::size_t n = candidates_.size();
-    for (std::size_t m = 0; m < n;) {
-        const int vertex = candidates_[m].vertex, shell = shell_of(candidates_[m].a);
-        std::size_t end = m, nearest = n;
-        for (; end < n && candidates_[end].vertex == vertex && shell_of(candidates_[end].a) == shell; ++end)
-            if (candidates_[end].active &&
-                (nearest == n || candidates_[end].distance < candidates_[nearest].distance))
-                nearest = end;
-        for (std::size_t k = m; k < end; ++k)
-            if (k != nearest && candidates_[k].active) {
-                candidates_[k].active = false;
-                candidates_[k].friction = 0;
-            }
-        m = end;
+    std::size_t nearest = end;
+    for (std::size_t k = begin; k < end; ++k) {
+        evaluate_contact(candidates_[k], dt);
+        if (candidates_[k].active &&
+            (nearest == end || candidates_[k].distance < candidates_[nearest].distance))
+            nearest = k;
     }
+    for (std::size_t k = begin; k < end; ++k)
+        if (k != nearest && candidates_[k].active) {
+            candidates_[k].active = false;
+            candidates_[k].friction = 0;
+        }
 }
 
 // Adds the contacts of all candidates to the vertices in the fixed order of the candidates (vertex, element):
 // the forces do not depend on the number of threads that evaluated them, bit for bit.
 void ShellModel::gather_contact_forces()
 {
-    keep_nearest_elements();
     for (const Candidate& cand : candidates_) {
         if (cand.overlap) {
             const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
@@ -339,7 +347,7 @@ void ShellModel::compute_forces(double dt)
     // Each shell writes the forces of its own vertices only, each contact its own record: both loops run in
     // one parallel region (worth it above a few thousand vertices), with results independent of the threads.
     const int n_shells = static_cast<int>(shells_.size());
-    const long n_candidates = contacts ? static_cast<long>(candidates_.size()) : 0;
+    const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
 #pragma omp parallel if (vertices() > 2000)
     {
 #pragma omp for schedule(dynamic, 4) nowait
@@ -350,8 +358,8 @@ void ShellModel::compute_forces(double dt)
             if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
         }
 #pragma omp for schedule(static)
-        for (long m = 0; m < n_candidates; ++m)
-            evaluate_contact(candidates_[m], dt);
+        for (long g = 0; g < n_groups; ++g)
+            evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt);
     }
     if (contacts) gather_contact_forces();
 }
@@ -592,6 +600,7 @@ void ShellModel::transfer(Archive& archive)
         archive(*history);
     archive(shell_of_);
     archive(candidates_);
+    archive(contact_groups_);
     bool listed = neighbours_.has_value();
     archive(listed);
     if (archive.loading()) {

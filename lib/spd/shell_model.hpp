@@ -186,11 +186,13 @@ class ShellModel
         void transfer(Archive& archive);
     };
     std::vector<Candidate> candidates_; // sorted by (vertex, a)
+    // Start of each run of candidates of one vertex against one other shell, then candidates_.size().
+    std::vector<std::size_t> contact_groups_;
     std::optional<NeighbourList<2>> neighbours_;
     double list_length_ = 0; // element length bound L of the list's cutoff [m]
     int list_builds_ = 0;
     void evaluate_contact(Candidate& candidate, double dt) const;
-    void keep_nearest_elements();
+    void evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
     void gather_contact_forces();
     ContactLaw contact_;
     std::int64_t steps_ = 0;
