@@ -394,6 +394,35 @@ void ShellModel::step(double dt, double damping)
               << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
     }
+    if (contact_.k_n > 0) check_step_length(dt);
+}
+
+// A vertex that moves farther than its contact radius r in one step can pass through an element: the
+// sphero-segment law (section 2.3) sees a contact only while the vertex stays on its side. Such a step is the
+// sign of an energy blow-up (a time step above the stability limit, an exploding load), long before the
+// state turns non-finite: exit 3 naming the vertex, its particle and the step. The cheap test is against the
+// smallest contact radius of the free shells; a vertex that passes it is then checked against its own.
+void ShellModel::check_step_length(double dt) const
+{
+    double r_min = INFINITY;
+    for (const Shell& s : shells_)
+        if (!s.rigid && s.radius > 0) r_min = std::min(r_min, s.radius);
+    if (!std::isfinite(r_min)) return;
+    const double v_limit_squared = r_min * r_min / (dt * dt);
+    const int n = vertices();
+    for (int i = 0; i < n; ++i) {
+        const double v2 = v_[2 * i] * v_[2 * i] + v_[2 * i + 1] * v_[2 * i + 1];
+        if (v2 <= v_limit_squared || (inverse_mass_[2 * i] == 0 && inverse_mass_[2 * i + 1] == 0)) continue;
+        const double r = shells_[shell_of(i)].radius, moved = std::sqrt(v2) * dt;
+        if (r == 0 || moved <= r) continue;
+        std::ostringstream cause;
+        cause << "vertex " << i << " of particle " << shell_of(i) << " moved " << moved
+              << " m in one step, more than its contact radius r = " << r
+              << " m (it can pass through an element): an energy blow-up, e.g. dt/dt_c = "
+              << dt / critical_time_step() << " above the stable "
+              << stable_time_step() / critical_time_step() << ", or an exploding load";
+        throw NumericalError("vertex step length", steps_, cause.str());
+    }
 }
 
 // RATTLE (H. C. Andersen, J. Comput. Phys. 52 (1983) 24) for incompressible cores, eq. (4) in the limit

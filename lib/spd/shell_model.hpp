@@ -79,7 +79,8 @@ class ShellModel
 
     // One velocity-Verlet step (section 2.4) with viscous damping c v [N s/m] on the free vertices; with an
     // incompressible core, its RATTLE form (step_constrained). Throws NumericalError (exit 3) on a non-finite
-    // state, naming dt/dt_c.
+    // state, naming dt/dt_c, and, with contacts, on a vertex that moved farther than its contact radius in
+    // the step (a blow-up that can pass through elements), naming the vertex and its particle.
     void step(double dt, double damping);
 
     // SPD section 2.4: dt_c = sqrt(m / k_max), with k_max the largest of k_s, the bending stiffness
@@ -154,6 +155,7 @@ class ShellModel
     double shell_bending_energy(const Shell& s) const;
     void core_forces(int index);
     void step_constrained(double dt, double damping);
+    void check_step_length(double dt) const;
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
     // are xs (2 count entries): outward for a CCW polygon [m].
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;

@@ -107,6 +107,33 @@ TEST_CASE("a blow-up names the step, the first non-finite vertex and its particl
     CHECK(message.find("dt/dt_c = 1.2") != std::string::npos);
 }
 
+TEST_CASE("an energy blow-up in contact stops when a vertex moves farther than its contact radius in one "
+          "step, naming it, before the state is non-finite [issue 4, reliability]")
+{
+    // A ring squeezed between the walls and stepped at 1.1 times the damped-contact limit
+    // (decision spd-stability-limit): the contact chatter grows geometrically.
+    RingSetup setup;
+    setup.nodes = 32;
+    RingBetweenWalls w = ring_between_walls(setup);
+    for (int i = 0; i < setup.nodes; ++i) // pressed 1e-3 R into the bottom wall
+        w.model.set_vertex(i, w.model.vertex(i) + Vec2(0, -1e-3 * setup.radius));
+    w.model.compute_forces(0.0);
+    const double dt = 1.1 * w.model.stable_time_step();
+    NumericalError caught("", 0, "");
+    try {
+        for (int n = 0; n < 100'000; ++n)
+            w.model.step(dt, 0.0);
+    } catch (const NumericalError& e) {
+        caught = e;
+    }
+    const std::string message = caught.what();
+    CAPTURE(message);
+    CHECK(caught.quantity == "vertex step length");
+    CHECK(std::string(caught.what()).find("of particle " + std::to_string(w.ring) + " moved") !=
+          std::string::npos);
+    CHECK(caught.step > 1);
+}
+
 TEST_CASE("ring between walls: the largest stable dt is the damped-contact limit 2 (sqrt 2 - 1) dt_c "
           "[SPD section 2.4, decision spd-stability-limit]")
 {
