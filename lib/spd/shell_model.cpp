@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numbers>
 #include <sstream>
 #include <utility>
@@ -339,29 +340,55 @@ void ShellModel::gather_contact_forces()
 
 void ShellModel::compute_forces(double dt)
 {
-    f_ = applied_;
+    std::exception_ptr failure;
+#pragma omp parallel if (vertices() > parallel_vertices)
+    forces_in_region(dt, failure);
+    if (failure) std::rethrow_exception(failure);
+}
+
+namespace {
+// Runs `task` on one thread of a parallel region; an exception cannot leave the region, so it is kept in
+// `failure` and rethrown by the caller after the region.
+template <class Task>
+void on_one_thread(std::exception_ptr& failure, Task&& task)
+{
+#pragma omp single
+    try {
+        task();
+    } catch (...) {
+        failure = std::current_exception();
+    }
+}
+} // namespace
+
+// The force evaluation inside an open parallel region (orphaned work-sharing: serial when none is open).
+// Each shell writes the forces of its own vertices only, each contact group its own records, and the gather
+// adds the contacts in a fixed order: the results do not depend on the number of threads, bit for bit.
+void ShellModel::forces_in_region(double dt, std::exception_ptr& failure)
+{
     const bool contacts = contact_.k_n > 0;
-    std::fill(contact_normal_.begin(), contact_normal_.end(), 0.0);
-    contact_force_.setZero();
-    if (contacts) update_contact_candidates();
-    // Each shell writes the forces of its own vertices only, each contact its own record: both loops run in
-    // one parallel region (worth it above a few thousand vertices), with results independent of the threads.
+    const long n = vertices();
+#pragma omp for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        f_.segment<2>(2 * i) = applied_.segment<2>(2 * i);
+        contact_force_.segment<2>(2 * i).setZero();
+        contact_normal_[i] = 0;
+    }
+    if (contacts) on_one_thread(failure, [&] { update_contact_candidates(); });
+    if (failure) return; // every thread sees it after the barrier of the single construct
     const int n_shells = static_cast<int>(shells_.size());
     const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
-#pragma omp parallel if (vertices() > 2000)
-    {
 #pragma omp for schedule(dynamic, 4) nowait
-        for (int p = 0; p < n_shells; ++p) {
-            const Shell& s = shells_[p];
-            if (s.rigid) continue;
-            internal_forces(s);
-            if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
-        }
-#pragma omp for schedule(static)
-        for (long g = 0; g < n_groups; ++g)
-            evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt);
+    for (int p = 0; p < n_shells; ++p) {
+        const Shell& s = shells_[p];
+        if (s.rigid) continue;
+        internal_forces(s);
+        if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
     }
-    if (contacts) gather_contact_forces();
+#pragma omp for schedule(static)
+    for (long g = 0; g < n_groups; ++g)
+        evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt);
+    if (contacts) on_one_thread(failure, [&] { gather_contact_forces(); });
 }
 
 void ShellModel::step(double dt, double damping)
@@ -369,21 +396,36 @@ void ShellModel::step(double dt, double damping)
     if (steps_ == 0) compute_forces(dt);
     const bool constrained =
         std::any_of(shells_.begin(), shells_.end(), [](const Shell& s) { return s.incompressible(); });
+    bool finite = true;
     if (constrained) {
         step_constrained(dt, damping);
+        finite = x_.allFinite() && v_.allFinite();
     } else {
-        const auto forces = [&](const Eigen::VectorXd&, const Eigen::VectorXd& v, Eigen::VectorXd& f) {
-            compute_forces(dt);
-            f = f_;
-            // Damping acts on free degrees of freedom only (the inverse mass masks the frozen ones).
-            add_viscous_damping(f, v, damping);
-        };
-        Eigen::VectorXd f = f_;
-        add_viscous_damping(f, v_, damping);
-        velocity_verlet_step(x_, v_, f, inverse_mass_, dt, forces);
+        // Velocity Verlet (kick-drift-kick, core/integrators.hpp) with the viscous damping -c v acting on the
+        // free degrees of freedom (the inverse mass masks the frozen ones), written per degree of freedom so
+        // that the whole step is one parallel region: the operations of velocity_verlet_step, in its order.
+        std::exception_ptr failure;
+        const long dofs = x_.size();
+#pragma omp parallel if (vertices() > parallel_vertices)
+        {
+#pragma omp for schedule(static)
+            for (long k = 0; k < dofs; ++k) {
+                v_[k] += 0.5 * dt * inverse_mass_[k] * (f_[k] - damping * v_[k]);
+                x_[k] += dt * v_[k];
+            }
+            forces_in_region(dt, failure);
+            if (!failure) {
+#pragma omp for schedule(static) reduction(&& : finite)
+                for (long k = 0; k < dofs; ++k) {
+                    v_[k] += 0.5 * dt * inverse_mass_[k] * (f_[k] - damping * v_[k]);
+                    finite = finite && std::isfinite(x_[k]) && std::isfinite(v_[k]);
+                }
+            }
+        }
+        if (failure) std::rethrow_exception(failure);
     }
     ++steps_;
-    if (!x_.allFinite() || !v_.allFinite()) {
+    if (!finite) {
         int bad = 0; // the first vertex with a non-finite position or velocity
         while (std::isfinite(x_[2 * bad]) && std::isfinite(x_[2 * bad + 1]) && std::isfinite(v_[2 * bad]) &&
                std::isfinite(v_[2 * bad + 1]))

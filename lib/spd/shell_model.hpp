@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -155,6 +156,9 @@ class ShellModel
     double shell_bending_energy(const Shell& s) const;
     void core_forces(int index);
     void step_constrained(double dt, double damping);
+    // Parallel regions open above this many vertices: below, a region costs more than it saves.
+    static constexpr int parallel_vertices = 2000;
+    void forces_in_region(double dt, std::exception_ptr& failure);
     void check_step_length(double dt) const;
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
     // are xs (2 count entries): outward for a CCW polygon [m].
