@@ -353,6 +353,46 @@ void ShellModel::compute_forces(double dt)
             evaluate_contact(candidates_[m], dt);
     }
     if (contacts) gather_contact_forces();
+    if (!links_.empty()) add_link_forces();
+}
+
+// Section 6: the intact links, in their fixed order (forces independent of the thread count). A link is
+// tested against eq. (39) with the forces of the current geometry; at zeta >= 0 it breaks before acting, and
+// the pair is left to the contact law (eqs. (6)-(7), decision spd-tissue-link-breaking).
+void ShellModel::add_link_forces()
+{
+    for (CohesiveLink& link : links_) {
+        if (link.broken) continue;
+        const LinkKinematics k = link_kinematics(link, vertex(link.a), vertex(link.b), vertex(link.partner_a),
+                                                 vertex(link.partner_b));
+        const LinkForces F = link_forces(link, link_law_, k);
+        link.f_n = F.f_n;
+        link.f_t = F.f_t;
+        if (yield_function(F.f_n, F.f_t, link_law_) >= 0) {
+            link.broken = true;
+            continue;
+        }
+        add_force(link.a, F.a);
+        add_force(link.b, F.b);
+        add_force(link.partner_a, F.partner_a);
+        add_force(link.partner_b, F.partner_b);
+    }
+}
+
+int ShellModel::broken_links() const
+{
+    return static_cast<int>(
+        std::count_if(links_.begin(), links_.end(), [](const CohesiveLink& l) { return l.broken; }));
+}
+
+double ShellModel::link_energy() const
+{
+    double W = 0;
+    for (const CohesiveLink& link : links_)
+        if (!link.broken)
+            W += spd::link_energy<double>(link, link_law_, vertex(link.a), vertex(link.b),
+                                          vertex(link.partner_a), vertex(link.partner_b));
+    return W;
 }
 
 void ShellModel::step(double dt, double damping)
@@ -451,6 +491,7 @@ double ShellModel::min_vertex_mass() const
 double ShellModel::critical_time_step() const
 {
     double k_max = contact_.k_n;
+    if (!links_.empty()) k_max = std::max({k_max, link_law_.k_n, link_law_.k_t});
     for (std::size_t p = 0; p < shells_.size(); ++p) {
         const Shell& s = shells_[p];
         if (s.rigid) continue;
