@@ -169,20 +169,40 @@ void run_tissue(const Parameters& p, RunContext& ctx)
             }
     }
     // The crack path: the broken links at the end, at their current positions.
-    auto& broken_table = ctx.table("broken.dat", {{"x1_over_R", "1", "vertex a of a broken link at the end"},
-                                                  {"y1_over_R", "1", "vertex a"},
-                                                  {"x2_over_R", "1", "vertex b"},
-                                                  {"y2_over_R", "1", "vertex b"}});
+    const CohesiveLaw& law = tissue.model.link_law();
+    auto& broken_table =
+        ctx.table("broken.dat", {{"x1_over_R", "1", "vertex a of a broken link at the end"},
+                                 {"y1_over_R", "1", "vertex a"},
+                                 {"x2_over_R", "1", "vertex b"},
+                                 {"y2_over_R", "1", "vertex b"},
+                                 {"fn_over_fn0", "1", "f_n at breaking over |f_n^0| (compression positive)"},
+                                 {"ft_over_ft0", "1", "f_t at breaking over f_t^0"}});
     for (const CohesiveLink& link : tissue.model.links())
         if (link.broken) {
             const Vec2 a = tissue.model.vertex(link.a) / R, b = tissue.model.vertex(link.b) / R;
-            broken_table.row({a.x(), a.y(), b.x(), b.y()});
+            broken_table.row(
+                {a.x(), a.y(), b.x(), b.y(), link.f_n / std::abs(law.f_n0), link.f_t / law.f_t0});
         }
+    // Fig. 31: the zeta = 0 curve of the library (yield_normal_force), and zeta on it (0 up to round-off).
+    auto& yield_table =
+        ctx.table("yield_curve.dat", {{"ft_over_ft0", "1", "tangential force over f_t^0"},
+                                      {"fn_over_fn0", "1", "normal force on zeta = 0 over |f_n^0| (eq. 39)"},
+                                      {"zeta", "1", "yield function eq. (39) evaluated on the curve"}});
+    double zeta_max = 0;
+    for (int k = -200; k <= 200; ++k) {
+        const double f_t = 0.01 * k * law.f_t0, f_n = yield_normal_force(f_t, law);
+        const double zeta = yield_function(f_n, f_t, law);
+        zeta_max = std::max(zeta_max, std::abs(zeta));
+        yield_table.row({f_t / law.f_t0, f_n / std::abs(law.f_n0), zeta});
+    }
 
     const double cell_area = total_cell_area(tess);
     const Cohesion end = cohesion(tissue);
     const int links = static_cast<int>(tissue.model.links().size());
     auto& s = ctx.summary();
+    s["yield_curve_zeta_max"] = zeta_max;
+    // Closed form of the compression branch: zeta(|f_n^0|, f_t^0 sqrt(2)) = 0 (breaking by shear only).
+    s["yield_zeta_at_shear_break"] = yield_function(std::abs(law.f_n0), law.f_t0 * std::sqrt(2.0), law);
     s["stress_max"] = sigma_max / sigma_star;
     s["strain_at_peak"] = eps_peak;
     s["strain_at_failure"] = or_null(strain_at_failure);
