@@ -6,7 +6,8 @@
 // rigid open shell (reference angles 0) whose vertices are frozen (inverse mass 0) and move with a
 // prescribed velocity. Internal laws are incremental (eqs. (1)-(4)): the history (axial forces, hinge
 // torques, core pressure) lives in per-element, per-vertex and per-shell records updated at each force
-// evaluation from the change of geometry since the previous one.
+// evaluation from the change of geometry since the previous one. Cohesive links between shells (section 6)
+// are optional per-link records (lib/spd/cohesive_link.hpp) with their broken state.
 #pragma once
 
 #include "core/neighbour_list.hpp"

@@ -7,6 +7,7 @@
 #include <voro++.hh>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -50,17 +51,36 @@ int box_sides(const Vec2& x, double width, double height, double tolerance)
            (std::abs(x.y()) < tolerance ? 4 : 0) | (std::abs(x.y() - height) < tolerance ? 8 : 0);
 }
 
-int popcount(int bits)
-{
-    return __builtin_popcount(static_cast<unsigned>(bits));
-}
-
 // Union-find root with path halving.
 int root(std::vector<int>& parent, int i)
 {
     while (parent[i] != i)
         i = parent[i] = parent[parent[i]];
     return i;
+}
+
+// Groups of points closer than `distance` to one another (transitively): the group root of each point
+// (union-find over the points sorted by x, so that only neighbours within `distance` in x are compared).
+std::vector<int> proximity_groups(const std::vector<Vec2>& points, double distance)
+{
+    const int m = static_cast<int>(points.size());
+    std::vector<int> parent(static_cast<std::size_t>(m));
+    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<int> order(parent);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return points[a].x() < points[b].x(); });
+    for (int u = 0; u < m; ++u)
+        for (int w = u + 1; w < m && points[order[w]].x() - points[order[u]].x() < distance; ++w)
+            if ((points[order[w]] - points[order[u]]).norm() < distance)
+                parent[root(parent, order[w])] = root(parent, order[u]);
+    for (int u = 0; u < m; ++u)
+        parent[u] = root(parent, u);
+    return parent;
+}
+
+int distinct(std::vector<int> labels)
+{
+    std::sort(labels.begin(), labels.end());
+    return static_cast<int>(std::unique(labels.begin(), labels.end()) - labels.begin());
 }
 
 // Inward unit normal of the edge a -> b of a CCW polygon.
@@ -122,22 +142,14 @@ Tessellation laguerre_tessellation(const TissueSetup& setup)
     for (const auto& polygon : polygons)
         all.insert(all.end(), polygon.begin(), polygon.end());
     const int m = static_cast<int>(all.size());
-    const double merge = 0.2 * R, on_side = 1e-9 * R;
-    std::vector<int> parent(static_cast<std::size_t>(m));
-    std::iota(parent.begin(), parent.end(), 0);
-    std::vector<int> order(parent);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return all[a].x() < all[b].x(); });
-    for (int u = 0; u < m; ++u)
-        for (int w = u + 1; w < m && all[order[w]].x() - all[order[u]].x() < merge; ++w)
-            if ((all[order[w]] - all[order[u]]).norm() < merge)
-                parent[root(parent, order[w])] = root(parent, order[u]);
+    const double on_side = 1e-9 * R;
+    const std::vector<int> group = proximity_groups(all, 0.2 * R);
     std::map<int, int> corner_of_root;
     std::vector<int> corner_of(static_cast<std::size_t>(m));
     std::vector<int> best_sides, members;
     std::vector<Vec2> sum;
     for (int u = 0; u < m; ++u) {
-        const int r = root(parent, u);
-        auto [it, fresh] = corner_of_root.try_emplace(r, static_cast<int>(sum.size()));
+        auto [it, fresh] = corner_of_root.try_emplace(group[u], static_cast<int>(sum.size()));
         if (fresh) {
             sum.emplace_back(0, 0);
             best_sides.push_back(-1);
@@ -145,7 +157,7 @@ Tessellation laguerre_tessellation(const TissueSetup& setup)
         }
         const int c = it->second;
         corner_of[u] = c;
-        const int sides = popcount(box_sides(all[u], t.width, t.height, on_side));
+        const int sides = std::popcount(static_cast<unsigned>(box_sides(all[u], t.width, t.height, on_side)));
         if (sides > best_sides[c]) { // the position of the member on most box sides (mean of equals)
             best_sides[c] = sides;
             sum[c].setZero();
@@ -171,18 +183,8 @@ Tessellation laguerre_tessellation(const TissueSetup& setup)
                              "than 0.2 R; allowed: a smaller spread");
         t.cells.push_back(corners);
     }
-    { // corners of the exact tessellation (copies within round-off) that the 0.2 R merge removed
-        std::vector<int> exact_parent(static_cast<std::size_t>(m));
-        std::iota(exact_parent.begin(), exact_parent.end(), 0);
-        for (int a = 0; a < m; ++a)
-            for (int w = a + 1; w < m && all[order[w]].x() - all[order[a]].x() < 1e-9 * R; ++w)
-                if ((all[order[w]] - all[order[a]]).norm() < 1e-9 * R)
-                    exact_parent[root(exact_parent, order[w])] = root(exact_parent, order[a]);
-        int exact = 0;
-        for (int a = 0; a < m; ++a)
-            if (root(exact_parent, a) == a) ++exact;
-        t.merged_corners = exact - static_cast<int>(t.corners.size());
-    }
+    // Corners of the exact tessellation (copies equal within round-off) that the 0.2 R merge removed.
+    t.merged_corners = distinct(proximity_groups(all, on_side)) - static_cast<int>(t.corners.size());
     return t;
 }
 

@@ -117,7 +117,7 @@ struct TissueSnapshot
 struct PullSetup
 {
     double pull_rate = 1e-5; // dH/dt / H0 in units of 1/t_c, t_c = sqrt(m/k_s)
-    double strain_max = 0.2; // ln(H/H0) at the end, unless the tissue fails first
+    double strain_max = 0.3; // ln(H/H0) at the end, unless the tissue fails first
     double stop_fraction =
         0.02;                // stop once no intact path joins the clamps and sigma < stop_fraction sigma_max
     double damping = 0.02;   // global viscous damping over 2 sqrt(m k_s)

@@ -278,7 +278,7 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
             ParameterSpec::real("pull_rate", 2e-5, "1/t_c",
                                 "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
                 .positive(),
-            ParameterSpec::real("strain_max", 0.2, "1", "largest eps_h = ln(H/H0)").positive().below(2.0),
+            ParameterSpec::real("strain_max", 0.3, "1", "largest eps_h = ln(H/H0)").positive().below(2.0),
             ParameterSpec::real(
                 "stop_fraction", 0.02, "1",
                 "the run stops once sigma < stop_fraction sigma_max after the peak with broken "

@@ -15,14 +15,19 @@ stats file using (column("snapshot") >= 1 && column("snapshot") <= 3 ? column("W
 set cbrange [0:STATS_max]
 set cblabel "W / W_0"
 stats file using "x_over_R" nooutput
-set xrange [STATS_min - 0.5:STATS_max + 0.5]
+x_lo = STATS_min - 0.5
+x_hi = STATS_max + 0.5
 stats file using (column("snapshot") <= 3 ? column("y_over_R") : NaN) nooutput
-set yrange [STATS_min - 0.5:STATS_max + 0.5]
+y_lo = STATS_min - 0.5
+y_hi = STATS_max + 0.5
 do for [k=1:3] {
+    set autoscale xy # stats of one column obeys the x range
     stats file using (column("snapshot") == k ? column("eps_h") : NaN) nooutput
     eps = STATS_max
     stats file using (column("snapshot") == k ? column("broken_links") : NaN) nooutput
     set title sprintf("{/Symbol e}_h = %.3f, %d links broken", eps, int(STATS_max))
+    set xrange [x_lo:x_hi]
+    set yrange [y_lo:y_hi]
     at(p) = column("snapshot") == k && column("cell") == p ? column("x_over_R") : NaN
     plot for [p=0:n-1] file using (at(p)):"y_over_R":"W_over_W0" with filledcurves closed fc palette notitle, \
          for [p=0:n-1] file using (at(p)):"y_over_R" with lines lc rgb '#333333' lw 0.6 notitle

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
