@@ -177,8 +177,13 @@ void run_tissue(const Parameters& p, RunContext& ctx)
                                  {"y2_over_R", "1", "vertex b"},
                                  {"fn_over_fn0", "1", "f_n at breaking over |f_n^0| (compression positive)"},
                                  {"ft_over_ft0", "1", "f_t at breaking over f_t^0"}});
+    double crack_height = 0; // mean height of the broken links above the bottom clamp, over H
+    const double y_bottom = tissue.model.vertex(tissue.bottom.front()).y(), H = clamp_height(tissue);
     for (const CohesiveLink& link : tissue.model.links())
         if (link.broken) {
+            crack_height +=
+                (0.5 * (tissue.model.vertex(link.a).y() + tissue.model.vertex(link.b).y()) - y_bottom) / H /
+                tissue.model.broken_links();
             const Vec2 a = tissue.model.vertex(link.a) / R, b = tissue.model.vertex(link.b) / R;
             broken_table.row(
                 {a.x(), a.y(), b.x(), b.y(), link.f_n / std::abs(law.f_n0), link.f_t / law.f_t0});
@@ -213,6 +218,8 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     s["broken_fraction"] = static_cast<double>(tissue.model.broken_links()) / links;
     s["broken_links_at_peak"] = r.records[peak].broken;
     s["separated"] = !end.bottom_to_top;
+    s["crack_height_over_H"] =
+        tissue.model.broken_links() > 0 ? nlohmann::json(crack_height) : nlohmann::json(nullptr);
     s["cell_groups"] = end.groups;
     s["cracks_crossing"] = end.bottom_to_top ? 0 : end.groups - 1;
     s["stress_drops"] = drops.size();
