@@ -244,7 +244,7 @@ Tissue build_tissue(const TissueSetup& setup)
             const Vec2 a = inset[k], b = inset[(k + 1) % count];
             if ((b - a).dot(C(k + 1) - C(k)) < 0.25 * (C(k + 1) - C(k)).squaredNorm()) {
                 std::ostringstream what;
-                what << "vertex_radius = " << r << " m: the inset by r shortens a cell edge of length "
+                what << "r = " << r << " m: the inset by r shortens a cell edge of length "
                      << (C(k + 1) - C(k)).norm() << " m below a quarter of its length; allowed: a smaller r";
                 throw InputError(what.str());
             }
@@ -311,10 +311,11 @@ Tissue build_tissue(const TissueSetup& setup)
         std::sort(clamp->begin(), clamp->end());
         clamp->erase(std::unique(clamp->begin(), clamp->end()), clamp->end());
         for (int i : *clamp) {
-            model.freeze(i, 0);
+            if (!setup.sliding_clamps) model.freeze(i, 0);
             model.freeze(i, 1);
         }
     }
+    if (setup.sliding_clamps) model.freeze(tissue.bottom.front(), 0); // no rigid translation along x
     model.set_cohesive_links(std::move(links), sc.link);
     // Broken links: the contact law of eqs. (6)-(7) with mu = 0.3 (section 6), the link's stiffnesses and the
     // normal contact damping of the ring scenes (decision spd-tissue-contact).

@@ -44,6 +44,9 @@ struct TissueSetup
     double cohesion = 1;                        // |f_n^0| / F*
     double shear_strength_ratio = 1;            // f_t^0 / |f_n^0|
     double friction = 0.3;                      // mu of broken links (section 6)
+    // Clamped vertices: both components fixed, or only the vertical one (the rows slide along the walls,
+    // one bottom vertex also fixed in x), decision spd-tissue-clamps.
+    bool sliding_clamps = false;
 };
 
 // The Laguerre cells: polygons (CCW, corners shared exactly between cells) tiling [0, W] x [0, H].
@@ -116,7 +119,7 @@ struct TissueSnapshot
 
 struct PullSetup
 {
-    double pull_rate = 1e-5; // dH/dt / H0 in units of 1/t_c, t_c = sqrt(m/k_s)
+    double pull_rate = 5e-6; // dH/dt / H0 in units of 1/t_c, t_c = sqrt(m/k_s)
     double strain_max = 0.3; // ln(H/H0) at the end, unless the tissue fails first
     double stop_fraction =
         0.02;                // stop once no intact path joins the clamps and sigma < stop_fraction sigma_max
