@@ -16,7 +16,7 @@ stats file using (column("snapshot") == 0 ? column("x_over_R") : NaN) nooutput
 x_lo = STATS_min
 x_hi = STATS_max
 set xrange [x_lo - 0.5:x_hi + 0.5]
-set yrange [y_lo - 0.5:y_hi + 0.8]
+set yrange [y_lo - 0.5:y_hi + 1.5]
 set title "set-up: cells (sphero-polygons inset by r), links (red); bottom fixed, top pulled"
 set arrow 1 from x_lo, y_lo - 0.05 to x_hi, y_lo - 0.05 nohead lw 4 lc rgb '#000000' front
 set arrow 2 from x_lo, y_hi + 0.05 to x_hi, y_hi + 0.05 nohead lw 4 lc rgb '#000000' front
