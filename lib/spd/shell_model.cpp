@@ -388,7 +388,50 @@ void ShellModel::forces_in_region(double dt, std::exception_ptr& failure)
 #pragma omp for schedule(static)
     for (long g = 0; g < n_groups; ++g)
         evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt);
-    if (contacts) on_one_thread(failure, [&] { gather_contact_forces(); });
+    if (contacts || !links_.empty())
+        on_one_thread(failure, [&] {
+            if (contacts) gather_contact_forces();
+            if (!links_.empty()) add_link_forces();
+        });
+}
+
+// Section 6: the intact links, in their fixed order (forces independent of the thread count). A link is
+// tested against eq. (39) with the forces of the current geometry; at zeta >= 0 it breaks before acting, and
+// the pair is left to the contact law (eqs. (6)-(7), decision spd-tissue-link-breaking).
+void ShellModel::add_link_forces()
+{
+    for (CohesiveLink& link : links_) {
+        if (link.broken) continue;
+        const LinkKinematics k = link_kinematics(link, vertex(link.a), vertex(link.b), vertex(link.partner_a),
+                                                 vertex(link.partner_b));
+        const LinkForces F = link_forces(link, link_law_, k);
+        link.f_n = F.f_n;
+        link.f_t = F.f_t;
+        if (yield_function(F.f_n, F.f_t, link_law_) >= 0) {
+            link.broken = true;
+            continue;
+        }
+        add_force(link.a, F.a);
+        add_force(link.b, F.b);
+        add_force(link.partner_a, F.partner_a);
+        add_force(link.partner_b, F.partner_b);
+    }
+}
+
+int ShellModel::broken_links() const
+{
+    return static_cast<int>(
+        std::count_if(links_.begin(), links_.end(), [](const CohesiveLink& l) { return l.broken; }));
+}
+
+double ShellModel::link_energy() const
+{
+    double W = 0;
+    for (const CohesiveLink& link : links_)
+        if (!link.broken)
+            W += spd::link_energy<double>(link, link_law_, vertex(link.a), vertex(link.b),
+                                          vertex(link.partner_a), vertex(link.partner_b));
+    return W;
 }
 
 void ShellModel::step(double dt, double damping)
@@ -531,6 +574,7 @@ double ShellModel::min_vertex_mass() const
 double ShellModel::critical_time_step() const
 {
     double k_max = contact_.k_n;
+    if (!links_.empty()) k_max = std::max({k_max, link_law_.k_n, link_law_.k_t});
     for (std::size_t p = 0; p < shells_.size(); ++p) {
         const Shell& s = shells_[p];
         if (s.rigid) continue;
@@ -681,6 +725,8 @@ void ShellModel::transfer(Archive& archive)
     if (listed) archive(*neighbours_);
     archive(list_length_);
     archive(list_builds_);
+    archive(links_);
+    archive(link_law_);
     archive(contact_);
     archive(steps_);
 }

@@ -6,12 +6,14 @@
 // rigid open shell (reference angles 0) whose vertices are frozen (inverse mass 0) and move with a
 // prescribed velocity. Internal laws are incremental (eqs. (1)-(4)): the history (axial forces, hinge
 // torques, core pressure) lives in per-element, per-vertex and per-shell records updated at each force
-// evaluation from the change of geometry since the previous one.
+// evaluation from the change of geometry since the previous one. Cohesive links between shells (section 6)
+// are optional per-link records (lib/spd/cohesive_link.hpp) with their broken state.
 #pragma once
 
 #include "core/neighbour_list.hpp"
 #include "core/vector.hpp"
 #include "spd/calibration.hpp"
+#include "spd/cohesive_link.hpp"
 
 #include <Eigen/Core>
 
@@ -70,6 +72,19 @@ class ShellModel
     // Freezes one degree of freedom (0 = x, 1 = y) of a vertex: it keeps its velocity (zero by default).
     void freeze(int vertex, int component);
     void set_contact_law(ContactLaw law) { contact_ = law; }
+    // Cohesive links between vertices of different shells (section 6, lib/spd/cohesive_link.hpp): their
+    // forces are added at each force evaluation, a link whose yield function eq. (39) reaches 0 breaks for
+    // good and adds no force from then on (decision spd-tissue-link-breaking). Scenes without links pay
+    // nothing.
+    void set_cohesive_links(std::vector<CohesiveLink> links, const CohesiveLaw& law)
+    {
+        links_ = std::move(links);
+        link_law_ = law;
+    }
+    const std::vector<CohesiveLink>& links() const { return links_; }
+    const CohesiveLaw& link_law() const { return link_law_; }
+    int broken_links() const;
+    double link_energy() const; // sum of the intact links' energies k_n u_n^2/2 + k_t u_t^2/2 [J]
     // A constant external force on a vertex [N] (a point load, section 3).
     void set_applied_force(int vertex, const Vec2& force) { applied_.segment<2>(2 * vertex) = force; }
 
@@ -85,7 +100,7 @@ class ShellModel
     void step(double dt, double damping);
 
     // SPD section 2.4: dt_c = sqrt(m / k_max), with k_max the largest of k_s, the bending stiffness
-    // 4 k_b / l^2 seen by a vertex, the contact stiffness k_n and the core stiffness
+    // 4 k_b / l^2 seen by a vertex, the contact stiffness k_n, the link stiffnesses and the core stiffness
     // K_Omega s^2 sum_k |dA/dx_k|^2 / V0 (the eigenvalue of the rank-one core Hessian, decision
     // spd-dtc-kmax).
     double critical_time_step() const;
@@ -132,6 +147,8 @@ class ShellModel
 
     // Kinematic control of a rigid shell: sets the velocity of all its vertices.
     void set_velocity(int shell, const Vec2& velocity);
+    // Sets the velocity of one vertex (a frozen vertex then moves kinematically, e.g. a clamped boundary).
+    void set_vertex_velocity(int i, const Vec2& velocity) { v_.segment<2>(2 * i) = velocity; }
     // Moves one vertex (a prescribed configuration, e.g. for finite-difference checks of the forces).
     void set_vertex(int i, const Vec2& position) { x_.segment<2>(2 * i) = position; }
     void translate(int shell, const Vec2& displacement);
@@ -200,6 +217,9 @@ class ShellModel
     void evaluate_contact(Candidate& candidate, double dt) const;
     void evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
     void gather_contact_forces();
+    void add_link_forces();
+    std::vector<CohesiveLink> links_;
+    CohesiveLaw link_law_;
     ContactLaw contact_;
     std::int64_t steps_ = 0;
 };

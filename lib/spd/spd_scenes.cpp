@@ -437,6 +437,7 @@ void register_spd_scenes(SceneRegistry& registry)
         }),
         run_ring_compression});
     register_spd_assembly_scenes(registry);
+    register_spd_tissue_scenes(registry);
 }
 
 } // namespace softgrain

@@ -1,0 +1,343 @@
+// Scene spd.tissue (Trivino et al., section 6, Figs. 30-34): tensile fracture of a cellular tissue.
+#include "core/errors.hpp"
+#include "core/output.hpp"
+#include "spd/spd_scenes.hpp"
+#include "spd/tissue.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace softgrain {
+
+namespace {
+using namespace spd;
+
+// Stress drops (decision spd-tissue-measures): sigma falls by more than `threshold` from a running maximum
+// before it rises by `threshold` above the running minimum; a drop's size is maximum - minimum.
+std::vector<double> stress_drops(const std::vector<double>& sigma, double threshold)
+{
+    std::vector<double> drops;
+    double high = sigma.front(), low = sigma.front();
+    bool falling = false;
+    for (double s : sigma) {
+        if (!falling) {
+            high = std::max(high, s);
+            if (s < high - threshold) falling = true, low = s;
+        } else {
+            low = std::min(low, s);
+            if (s > low + threshold) {
+                drops.push_back(high - low);
+                falling = false;
+                high = s;
+            }
+        }
+    }
+    if (falling) drops.push_back(high - low);
+    return drops;
+}
+
+// The stored snapshot closest in strain to `strain`.
+std::size_t nearest_snapshot(const std::vector<TissueSnapshot>& snaps, double strain)
+{
+    std::size_t best = 0;
+    for (std::size_t k = 0; k < snaps.size(); ++k)
+        if (std::abs(snaps[k].strain - strain) < std::abs(snaps[best].strain - strain)) best = k;
+    return best;
+}
+
+nlohmann::json or_null(double v)
+{
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+// The measures of Fig. 33 on the recorded curve (decision spd-tissue-measures): sigma = F_top/(W s), its
+// peak, the failure strain (first record after the peak below 0.1 sigma_max), the stress drops of more than
+// 0.05 sigma_max and the growth of their size (later half over earlier half).
+struct CurveMeasures
+{
+    std::vector<double> sigma; // [Pa]
+    double sigma_max = 0;
+    std::size_t peak = 0;
+    double strain_at_failure = NAN;
+    std::vector<double> drops; // [sigma_max]
+    double growth = NAN;
+};
+CurveMeasures curve_measures(const std::vector<TissueRecord>& records, double width_depth)
+{
+    CurveMeasures m;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        m.sigma.push_back(records[k].force_top / width_depth);
+        if (m.sigma.back() > m.sigma_max) m.sigma_max = m.sigma.back(), m.peak = k;
+    }
+    for (std::size_t k = m.peak; k < records.size(); ++k)
+        if (m.sigma[k] < 0.1 * m.sigma_max) {
+            m.strain_at_failure = records[k].strain;
+            break;
+        }
+    std::vector<double> normalised;
+    for (double s : m.sigma)
+        normalised.push_back(s / m.sigma_max);
+    m.drops = stress_drops(normalised, 0.05);
+    if (m.drops.size() >= 2) {
+        const std::size_t half = m.drops.size() / 2;
+        double first = 0, second = 0;
+        for (std::size_t k = 0; k < m.drops.size(); ++k)
+            (k < half ? first : second) += m.drops[k];
+        m.growth =
+            (second / static_cast<double>(m.drops.size() - half)) / (first / static_cast<double>(half));
+    }
+    return m;
+}
+
+// Fig. 30: the links at set-up.
+void write_links(RunContext& ctx, const Tissue& tissue, double R)
+{
+    auto& table = ctx.table("links.dat", {{"x1_over_R", "1", "linked vertex a at set-up"},
+                                          {"y1_over_R", "1", "linked vertex a"},
+                                          {"x2_over_R", "1", "linked vertex b"},
+                                          {"y2_over_R", "1", "linked vertex b"}});
+    for (const CohesiveLink& link : tissue.model.links()) {
+        const Vec2 a = tissue.model.vertex(link.a) / R, b = tissue.model.vertex(link.b) / R;
+        table.row({a.x(), a.y(), b.x(), b.y()});
+    }
+}
+
+// Figs. 30, 32, 34: set-up, three states during loading (half the peak strain, the peak, halfway from the
+// peak to the end) and the end of the run, cells coloured by W/W0.
+void write_snapshots(RunContext& ctx, const PullResult& r, double eps_peak, double R, double W0)
+{
+    const double eps_end = r.records.back().strain;
+    const std::vector<std::size_t> chosen = {
+        0, nearest_snapshot(r.snapshots, 0.5 * eps_peak), nearest_snapshot(r.snapshots, eps_peak),
+        nearest_snapshot(r.snapshots, 0.5 * (eps_peak + eps_end)), r.snapshots.size() - 1};
+    auto& table = ctx.table(
+        "snapshot.dat",
+        {{"snapshot", "1",
+          "0: set-up, 1-3: during loading (eps_peak/2, eps_peak, halfway to the end), 4: end"},
+         {"eps_h", "1", "ln(H/H0) of the snapshot"},
+         {"broken_links", "1", "links broken at the snapshot"},
+         {"cell", "1", "cell index"},
+         {"x_over_R", "1", "vertex position over the mean disk radius (closed polygon)"},
+         {"y_over_R", "1", "vertex position"},
+         {"W_over_W0", "1", "elastic energy of the cell (stretch + bending) over W0 = (f_n^0)^2/(2 k_n)"}});
+    for (std::size_t n = 0; n < chosen.size(); ++n) {
+        const TissueSnapshot& snap = r.snapshots[chosen[n]];
+        for (std::size_t c = 0; c < snap.cells.size(); ++c)
+            for (std::size_t k = 0; k <= snap.cells[c].size(); ++k) {
+                const Vec2& x = snap.cells[c][k % snap.cells[c].size()];
+                table.row({double(n), snap.strain, double(snap.broken), double(c), x.x() / R, x.y() / R,
+                           snap.energy[c] / W0});
+            }
+    }
+}
+
+// The crack: the broken links at the end (positions, forces at breaking). Returns the mean height of the
+// broken links above the bottom clamp over H (NaN without any).
+double write_crack(RunContext& ctx, const Tissue& tissue, double R)
+{
+    const ShellModel& model = tissue.model;
+    const CohesiveLaw& law = model.link_law();
+    auto& table =
+        ctx.table("broken.dat", {{"x1_over_R", "1", "vertex a of a broken link at the end"},
+                                 {"y1_over_R", "1", "vertex a"},
+                                 {"x2_over_R", "1", "vertex b"},
+                                 {"y2_over_R", "1", "vertex b"},
+                                 {"fn_over_fn0", "1", "f_n at breaking over |f_n^0| (compression positive)"},
+                                 {"ft_over_ft0", "1", "f_t at breaking over f_t^0"}});
+    const double y_bottom = model.vertex(tissue.bottom.front()).y(), H = clamp_height(tissue);
+    double height = 0;
+    for (const CohesiveLink& link : model.links())
+        if (link.broken) {
+            const Vec2 a = model.vertex(link.a), b = model.vertex(link.b);
+            height += (0.5 * (a.y() + b.y()) - y_bottom) / H;
+            table.row({a.x() / R, a.y() / R, b.x() / R, b.y() / R, link.f_n / std::abs(law.f_n0),
+                       link.f_t / law.f_t0});
+        }
+    return height / model.broken_links();
+}
+
+// Fig. 31: the zeta = 0 curve of the library (yield_normal_force) over |f_t| <= 2 f_t^0, with zeta evaluated
+// on it. Returns max |zeta| (0 up to round-off).
+double write_yield_curve(RunContext& ctx, const CohesiveLaw& law)
+{
+    auto& table =
+        ctx.table("yield_curve.dat", {{"ft_over_ft0", "1", "tangential force over f_t^0"},
+                                      {"fn_over_fn0", "1", "normal force on zeta = 0 over |f_n^0| (eq. 39)"},
+                                      {"zeta", "1", "yield function eq. (39) evaluated on the curve"}});
+    double zeta_max = 0;
+    for (int k = -200; k <= 200; ++k) {
+        const double f_t = 0.01 * k * law.f_t0, f_n = yield_normal_force(f_t, law);
+        const double zeta = yield_function(f_n, f_t, law);
+        zeta_max = std::max(zeta_max, std::abs(zeta));
+        table.row({f_t / law.f_t0, f_n / std::abs(law.f_n0), zeta});
+    }
+    return zeta_max;
+}
+
+void run_tissue(const Parameters& p, RunContext& ctx)
+{
+    TissueSetup setup;
+    setup.columns = static_cast<int>(p.integer("columns"));
+    setup.rows = static_cast<int>(p.integer("rows"));
+    setup.radius_spread = p.real("radius_spread");
+    setup.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    setup.edge_segments = static_cast<int>(p.integer("edge_segments"));
+    setup.vertex_radius = p.real("r");
+    setup.material.h = p.real("h");
+    setup.eta = p.real("eta");
+    setup.plastic_ratio = p.real("plastic_ratio");
+    setup.link_stiffness = p.real("link_stiffness");
+    setup.shear_stiffness_ratio = p.real("shear_stiffness_ratio");
+    setup.cohesion = p.real("cohesion");
+    setup.shear_strength_ratio = p.real("shear_strength_ratio");
+    setup.friction = p.real("friction");
+    setup.sliding_clamps = p.choice("clamps") == "sliding";
+    PullSetup pulling;
+    pulling.pull_rate = p.real("pull_rate");
+    pulling.strain_max = p.real("strain_max");
+    pulling.damping = p.real("damping");
+    pulling.dt_factor = p.real("dt_factor");
+    pulling.stop_fraction = p.real("stop_fraction");
+    if (setup.material.h >= 0.5 * setup.radius)
+        throw InputError("h = " + std::to_string(setup.material.h) +
+                         ": the cell wall must be thin against the cell; allowed: h < 0.5 R = 0.5 m");
+    ctx.record_seed(setup.seed);
+
+    Tissue tissue = build_tissue(setup);
+    const TissueScales sc = tissue_scales(setup);
+    const Tessellation& tess = tissue.tessellation;
+    const double R = setup.radius, s_depth = setup.material.s, W = tess.width;
+    const double sigma_star = sc.F_star / (2 * R * s_depth); // eq. (37)
+
+    write_links(ctx, tissue, R);
+
+    auto progress = ctx.progress("spd.tissue");
+    const PullResult r = pull(tissue, pulling, [&](double f) { progress.update(f); });
+    progress.finish();
+    ctx.count_steps(r.steps);
+
+    const CurveMeasures m = curve_measures(r.records, W * s_depth);
+    if (!(m.sigma_max > 0))
+        throw NumericalError("tissue stress", r.steps, "the top clamp never pulled: sigma_max = 0");
+    auto& curve =
+        ctx.table("tissue.dat",
+                  {{"eps_h", "1", "vertical strain ln(H/H0), H between the clamped vertex lines"},
+                   {"sigma_over_sigmamax", "1", "top-clamp stress F_top/(W s) over its maximum (Fig. 33)"},
+                   {"sigma_over_sigmastar", "1", "top-clamp stress over sigma* = F*/(2Rs), eq. (37)"},
+                   {"sigma_bottom_over_sigmamax", "1", "bottom-clamp stress over the top maximum"},
+                   {"broken_links", "1", "links broken so far"},
+                   {"kinetic_over_W0", "1", "kinetic energy over W0 = (f_n^0)^2/(2 k_n)"}});
+    for (std::size_t k = 0; k < r.records.size(); ++k) {
+        const TissueRecord& rec = r.records[k];
+        curve.row({rec.strain, m.sigma[k] / m.sigma_max, m.sigma[k] / sigma_star,
+                   rec.force_bottom / (W * s_depth) / m.sigma_max, double(rec.broken),
+                   rec.kinetic_energy / sc.W0});
+    }
+    const double eps_peak = r.records[m.peak].strain;
+    write_snapshots(ctx, r, eps_peak, R, sc.W0);
+    const double crack_height = write_crack(ctx, tissue, R);
+    const CohesiveLaw& law = tissue.model.link_law();
+    const double zeta_max = write_yield_curve(ctx, law);
+
+    const double cell_area = total_cell_area(tess);
+    const Cohesion end = cohesion(tissue);
+    const int links = static_cast<int>(tissue.model.links().size());
+    auto& s = ctx.summary();
+    s["yield_curve_zeta_max"] = zeta_max;
+    // Closed form of the compression branch: zeta(|f_n^0|, f_t^0 sqrt(2)) = 0 (breaking by shear only).
+    s["yield_zeta_at_shear_break"] = yield_function(std::abs(law.f_n0), law.f_t0 * std::sqrt(2.0), law);
+    s["stress_max"] = m.sigma_max / sigma_star;
+    s["strain_at_peak"] = eps_peak;
+    s["strain_at_failure"] = or_null(m.strain_at_failure);
+    s["failure_width_over_peak_strain"] = or_null((m.strain_at_failure - eps_peak) / eps_peak);
+    s["strain_end"] = r.records.back().strain;
+    s["broken_links"] = tissue.model.broken_links();
+    s["links"] = links;
+    s["broken_fraction"] = static_cast<double>(tissue.model.broken_links()) / links;
+    s["broken_links_at_peak"] = r.records[m.peak].broken;
+    s["separated"] = !end.bottom_to_top;
+    s["crack_height_over_H"] = or_null(crack_height);
+    s["cell_groups"] = end.groups;
+    s["cracks_crossing"] = end.bottom_to_top ? 0 : end.groups - 1;
+    s["stress_drops"] = m.drops.size();
+    s["largest_stress_drop"] = m.drops.empty() ? 0.0 : *std::max_element(m.drops.begin(), m.drops.end());
+    s["stress_drop_growth"] = or_null(m.growth);
+    const TissueRecord& at_peak = r.records[m.peak];
+    s["force_mismatch_at_peak"] = std::abs(at_peak.force_top - at_peak.force_bottom) / at_peak.force_top;
+    s["cells"] = tissue.cells.size();
+    s["vertices"] = tissue.model.vertices();
+    s["interfaces"] = tissue.interfaces;
+    s["tessellation_area_error"] = std::abs(tess.voronoi_area - W * tess.height) / (W * tess.height);
+    s["cell_area_error"] = std::abs(cell_area - W * tess.height) / (W * tess.height);
+    s["merged_corners"] = tess.merged_corners;
+    s["W_over_R"] = W / R;
+    s["H0_over_R"] = tissue.height0 / R;
+    s["sigma_star"] = sigma_star;
+    s["W0"] = sc.W0;
+    s["F_star"] = sc.F_star;
+    s["dt"] = r.dt;
+    s["pull_speed_m_per_s"] = r.speed;
+}
+} // namespace
+
+void register_spd_tissue_scenes(SceneRegistry& registry)
+{
+    registry.add(Scene{
+        "spd.tissue",
+        "SPD section 6: tensile fracture of a tissue of Laguerre-Voronoi cells joined by cohesive links "
+        "(eq. 39); sigma/sigma_max vs eps_h, broken links, W/W0 snapshots (Figs. 30-34)",
+        {
+            ParameterSpec::integer("columns", 8, "1", "cells per row (mean disk radius R = 1 m)").at_least(2),
+            ParameterSpec::integer("rows", 10, "1", "rows of cells").at_least(2),
+            ParameterSpec::real("radius_spread", 0.1, "1",
+                                "Delta R/R of the disks whose radical cells make the tissue")
+                .non_negative()
+                .below(0.25),
+            ParameterSpec::integer("seed", 1, "1", "seed of the disk radii").non_negative(),
+            ParameterSpec::integer("edge_segments", 2, "1", "shell elements per cell edge").at_least(1),
+            ParameterSpec::real("r", 0.02, "m",
+                                "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "
+                                "(link rest distance about 2r, decision spd-tissue-shrink)")
+                .positive(),
+            ParameterSpec::real("h", 0.1, "m", "cell wall thickness (k_s, k_b from eqs. (10)-(11))")
+                .positive(),
+            ParameterSpec::real("eta", 0.0, "1", "core-to-shell stiffness ratio, eq. (24)").non_negative(),
+            ParameterSpec::real("plastic_ratio", INFINITY, "1", "M_b^Y/M*, eq. (32); inf: elastic cells")
+                .positive()
+                .infinity_allowed(),
+            ParameterSpec::real(
+                "link_stiffness", 0.1, "k_s",
+                "k_n of the links over the wall stretch stiffness k_s (decision spd-tissue-parameters)")
+                .positive(),
+            ParameterSpec::real("shear_stiffness_ratio", 0.1, "1",
+                                "k_t/k_n of the links (the paper's 'k_n = k_t = 0.1 k_n', decision "
+                                "spd-tissue-kt)")
+                .positive(),
+            ParameterSpec::real("cohesion", 1.0, "F*",
+                                "|f_n^0|, tensile threshold of eq. (39), over F* = k_b/R")
+                .positive(),
+            ParameterSpec::real("shear_strength_ratio", 1.0, "1", "f_t^0/|f_n^0| of eq. (39)").positive(),
+            ParameterSpec::real("friction", 0.3, "1", "mu of the contact that replaces a broken link")
+                .non_negative(),
+            ParameterSpec::choice(
+                "clamps", "fixed", {"fixed", "sliding"},
+                "cell edges on the bottom and top lines: fixed (glued), or sliding along the "
+                "walls (vertical component imposed only; decision spd-tissue-clamps)"),
+            ParameterSpec::real("pull_rate", 5e-6, "1/t_c",
+                                "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
+                .positive(),
+            ParameterSpec::real("strain_max", 0.3, "1", "largest eps_h = ln(H/H0)").positive().below(2.0),
+            ParameterSpec::real(
+                "stop_fraction", 0.02, "1",
+                "the run stops once no intact path of links joins the clamps and sigma < stop_fraction "
+                "sigma_max (0: run to strain_max)")
+                .non_negative()
+                .below(1.0),
+            ParameterSpec::real("damping", 0.02, "2 sqrt(m k_s)", "global viscous damping on free vertices")
+                .non_negative(),
+            ParameterSpec::real("dt_factor", 0.25, "1", "time step over dt_c = sqrt(m/k_max)").positive(),
+        },
+        run_tissue});
+}
+
+} // namespace softgrain
