@@ -1,5 +1,7 @@
 #include "spd/tissue.hpp"
 
+#include "core/checkpoint.hpp"
+
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "spd/assembly.hpp"
@@ -376,7 +378,8 @@ Cohesion cohesion(const Tissue& tissue)
     return result;
 }
 
-PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress)
+PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress,
+                Checkpoints* checkpoints)
 {
     PullResult result;
     ShellModel& model = tissue.model;
@@ -417,25 +420,49 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
         rec.kinetic_energy = model.kinetic_energy();
         result.records.push_back(rec);
     };
-    record();
-    snapshot();
+    // The state of a checkpoint: the model, the records so far, the steps taken and the largest force. The
+    // time step and speed above come from the tissue as built, before any state is read.
+    long taken = 0;
     double force_max = 0;
-    for (long n = 1; n <= total; ++n) {
+    const auto whole_state = [&](Archive& archive) {
+        archive(model);
+        archive(result.records);
+        archive(result.snapshots);
+        archive(taken);
+        archive(force_max);
+    };
+    if (!checkpoints || !checkpoints->resume(whole_state)) {
+        record();
+        snapshot();
+    }
+    for (long n = taken + 1; n <= total; ++n) {
         model.step(result.dt, damping);
         if (n % snapshot_interval == 0) snapshot();
-        if (n % interval != 0 && n != total) continue;
-        record();
-        const TissueRecord& rec = result.records.back();
-        force_max = std::max(force_max, rec.force_top);
-        progress(static_cast<double>(n) / total);
-        // Failed: no intact path of links joins the clamps any more and the load has gone.
-        if (rec.broken > 0 && rec.force_top < setup.stop_fraction * force_max &&
-            !cohesion(tissue).bottom_to_top)
-            break;
+        taken = n;
+        if (n % interval == 0 || n == total) {
+            record();
+            const TissueRecord& rec = result.records.back();
+            force_max = std::max(force_max, rec.force_top);
+            progress(static_cast<double>(n) / total);
+            // Failed: no intact path of links joins the clamps any more and the load has gone.
+            if (rec.broken > 0 && rec.force_top < setup.stop_fraction * force_max &&
+                !cohesion(tissue).bottom_to_top)
+                break;
+        }
+        if (checkpoints && checkpoints->due()) checkpoints->save(whole_state);
     }
     if (result.snapshots.back().strain < result.records.back().strain) snapshot();
     result.steps = model.steps();
     return result;
+}
+
+void transfer(Archive& archive, TissueSnapshot& snapshot)
+{
+    archive(snapshot.strain);
+    archive(snapshot.height);
+    archive(snapshot.cells);
+    archive(snapshot.energy);
+    archive(snapshot.broken);
 }
 
 } // namespace softgrain::spd

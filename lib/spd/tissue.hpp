@@ -24,6 +24,10 @@
 #include <functional>
 #include <vector>
 
+namespace softgrain {
+class Checkpoints;
+}
+
 namespace softgrain::spd {
 
 struct TissueSetup
@@ -136,6 +140,11 @@ struct PullResult
     double dt = 0, speed = 0;              // [s], [m/s]
     long steps = 0;
 };
-PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress);
+// With `checkpoints`, the pull writes its whole state when one is due and, if asked to, starts from the last
+// one: the result is the same, bit for bit, as that of an uninterrupted pull of the same tissue.
+PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress,
+                Checkpoints* checkpoints = nullptr);
+// Writes or reads a snapshot for a checkpoint (core/checkpoint.hpp).
+void transfer(Archive& archive, TissueSnapshot& snapshot);
 
 } // namespace softgrain::spd

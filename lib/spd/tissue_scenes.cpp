@@ -212,7 +212,8 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     write_links(ctx, tissue, R);
 
     auto progress = ctx.progress("spd.tissue");
-    const PullResult r = pull(tissue, pulling, [&](double f) { progress.update(f); });
+    const PullResult r = pull(
+        tissue, pulling, [&](double f) { progress.update(f); }, ctx.checkpoints());
     progress.finish();
     ctx.count_steps(r.steps);
 
@@ -337,7 +338,8 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
                 .non_negative(),
             ParameterSpec::real("dt_factor", 0.25, "1", "time step over dt_c = sqrt(m/k_max)").positive(),
         },
-        run_tissue});
+        run_tissue,
+        /*checkpoints=*/true});
 }
 
 } // namespace softgrain

@@ -1,12 +1,14 @@
 // ctest-label: slow
-// Reliability of long runs (issue 4): spd.compaction writes checkpoints, and a run resumed from one ends bit
-// for bit as the uninterrupted run, whether it was stopped while the deposit settles, during the loading or
-// during the unloading; `softgrain run --resume` refuses a checkpoint of other parameters or scenes.
-// Bit for bit is the only honest tolerance here: the resumed run executes the same floating-point operations
-// in the same order (same binary, same thread count), so any difference is a missing piece of state.
+// Reliability of long runs (issue 4): spd.compaction and spd.tissue write checkpoints, and a run resumed from
+// one ends bit for bit as the uninterrupted run, whether it was stopped while the deposit settles, during the
+// loading or the unloading, or after tissue links broke; `softgrain run --resume` refuses a checkpoint of
+// other parameters or scenes. Bit for bit is the only honest tolerance here: the resumed run executes the
+// same floating-point operations in the same order (same binary, same thread count), so any difference is a
+// missing piece of state.
 #include "core/checkpoint.hpp"
 #include "core/scene.hpp"
 #include "spd/compaction.hpp"
+#include "spd/tissue.hpp"
 #include "support/run_softgrain.hpp"
 
 #include <doctest/doctest.h>
@@ -125,6 +127,53 @@ TEST_CASE("a compaction resumed from a checkpoint of its loading or unloading en
         CHECK(reader.resumed());
         check_identical(reference, resumed);
     }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a tissue pull resumed from a checkpoint written after links broke ends bit for bit as an "
+          "uninterrupted one [issue 4]")
+{
+    TissueSetup setup; // the smoke tissue of the figures: 5 x 5 cells, pulled to eps_h = 0.1, past its peak
+    setup.columns = 5;
+    setup.rows = 5;
+    PullSetup pulling;
+    pulling.strain_max = 0.1;
+    Tissue whole = build_tissue(setup);
+    const PullResult reference = pull(whole, pulling, [](double) {});
+    REQUIRE(whole.model.broken_links() > 0);
+
+    const fs::path dir = scratch("tissue");
+    const fs::path file = dir / "spd.tissue.checkpoint";
+    Tissue interrupted = build_tissue(setup);
+    Checkpoints writer(file, 0.05, false, "spd.tissue", "{}", "test");
+    int saved_with_broken_links = -1;
+    const auto interrupt = [&](double) {
+        if (interrupted.model.broken_links() == 0) return;
+        if (saved_with_broken_links < 0)
+            saved_with_broken_links = writer.saved();
+        else if (writer.saved() > saved_with_broken_links)
+            throw Interrupted{};
+    };
+    CHECK_THROWS_AS(pull(interrupted, pulling, interrupt, &writer), Interrupted);
+
+    Tissue resumed_tissue = build_tissue(setup);
+    Checkpoints reader(file, 0, true, "spd.tissue", "{}", "test");
+    const PullResult resumed = pull(
+        resumed_tissue, pulling, [](double) {}, &reader);
+    CHECK(reader.resumed());
+    CHECK(resumed.steps == reference.steps);
+    CHECK(resumed_tissue.model.broken_links() == whole.model.broken_links());
+    REQUIRE(resumed.records.size() == reference.records.size());
+    int differing = 0;
+    for (std::size_t i = 0; i < reference.records.size(); ++i) {
+        const TissueRecord &a = reference.records[i], &b = resumed.records[i];
+        differing += !same_bits(a.strain, b.strain) || !same_bits(a.force_top, b.force_top) ||
+                     !same_bits(a.force_bottom, b.force_bottom) || a.broken != b.broken;
+    }
+    CHECK(differing == 0);
+    REQUIRE(resumed.snapshots.size() == reference.snapshots.size());
+    CHECK(resumed.snapshots.back().cells == reference.snapshots.back().cells);
+    CHECK(resumed.snapshots.back().energy == reference.snapshots.back().energy);
     fs::remove_all(dir);
 }
 
