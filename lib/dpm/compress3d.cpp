@@ -76,16 +76,18 @@ Compression3dResult compress3d_network(const Compression3dOptions& o)
     const BodyEnergy energy = [&network](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return spring_network_energy(network, y, gradient);
     };
-    // A spring's Hessian block k n n^T has absolute row sums <= sqrt(3) k, counted twice per node pair.
-    std::vector<int> coordination(static_cast<std::size_t>(network.node_count()), 0);
+    // Gershgorin bound of the rest-state Hessian: spring k n n^T enters the rows of both ends twice (diagonal
+    // and off-diagonal block), row c of node i sums 2 k |n_c| (|n_x| + |n_y| + |n_z|) over its springs.
+    Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, network.node_count());
     for (const Spring& s : network.springs) {
-        ++coordination[static_cast<std::size_t>(s.i)];
-        ++coordination[static_cast<std::size_t>(s.j)];
+        const Eigen::Vector3d n =
+            (network.x.segment<3>(3 * s.j) - network.x.segment<3>(3 * s.i)).cwiseAbs() / s.rest_length;
+        const Eigen::Vector3d row = 2 * network.k * n * n.sum();
+        rows.col(s.i) += row;
+        rows.col(s.j) += row;
     }
-    const int z_max = *std::max_element(coordination.begin(), coordination.end());
     Compression3dResult out;
-    out.compression = compress_between_plates<3>(network.x, energy, 1.0,
-                                                 2 * std::sqrt(3.0) * o.network_k * z_max, o.schedule);
+    out.compression = compress_between_plates<3>(network.x, energy, 1.0, rows.maxCoeff(), o.schedule);
     const double radius = network.x.reshaped(3, network.node_count()).colwise().norm().maxCoeff();
     out.E = affine_network_young_modulus(network, 4.0 / 3.0 * std::numbers::pi * radius * radius * radius);
     out.nu = affine_network_poisson_ratio;

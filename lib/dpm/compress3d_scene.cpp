@@ -1,6 +1,7 @@
 // dpm.compress3d: one 3D body squeezed between two plates (section 9.3.4, Fig. 9.11): the elastic tetrahedra
 // of eqs. (9.15)-(9.17), an elastic shell (eq. 9.2) or a spring-network ball; F~ = F_a (1 - nu^2)/(E D^2)
-// against delta~ = delta/D, and the exponents of F~ ~ delta~^alpha at small and large compression.
+// against delta~ = delta/D, and the exponents of F~ ~ delta~^alpha at small and large compression and while
+// the pole vertex alone touches the plate (decision dpm-compress3d-windows).
 #include "dpm/compress3d_scene.hpp"
 
 #include "core/errors.hpp"
@@ -20,6 +21,18 @@ std::optional<double> exponent_in_window(const CompressionResult& r, double low,
     std::vector<double> delta, force;
     for (const CompressionSample& s : r.samples)
         if (s.delta_over_d >= low * (1 - 1e-12) && s.delta_over_d <= high * (1 + 1e-12) && s.force > 0) {
+            delta.push_back(s.delta_over_d);
+            force.push_back(s.force);
+        }
+    return log_log_slope(delta, force);
+}
+
+// The exponent fitted to the samples in which only the pole vertex touches the top plate.
+std::optional<double> pole_contact_exponent(const CompressionResult& r)
+{
+    std::vector<double> delta, force;
+    for (const CompressionSample& s : r.samples)
+        if (s.top_contacts == 1) {
             delta.push_back(s.delta_over_d);
             force.push_back(s.force);
         }
@@ -81,6 +94,8 @@ void run_compress3d(const Parameters& p, RunContext& context)
     s["small_strain_exponent"] =
         json_or_null(exponent_in_window(c, o.schedule.delta_min, p.real("small_fit_max")));
     s["large_strain_exponent"] = json_or_null(exponent_in_window(c, p.real("fit_min"), p.real("fit_max")));
+    s["pole_contact_exponent"] = json_or_null(pole_contact_exponent(c));
+    s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
     s["contacts_at_max"] = c.samples.back().top_contacts;
     s["F_tilde_at_max"] = c.samples.back().force * scale;
     if (model == "spring_network") {
@@ -119,7 +134,7 @@ std::vector<ParameterSpec> compress3d_parameters()
         ParameterSpec::real("fit_min", 0.05, "D", "large_strain_exponent: fit over delta/D from this ...")
             .positive(),
         ParameterSpec::real("fit_max", 0.2, "D", "... up to this").positive(),
-        ParameterSpec::real("force_tolerance", 1e-10, "k_c sigma",
+        ParameterSpec::real("force_tolerance", 1e-8, "k_c sigma",
                             "FIRE stops at this rms force per degree of freedom")
             .positive(),
     };

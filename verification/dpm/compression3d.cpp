@@ -207,3 +207,47 @@ TEST_CASE("tetrahedra and shell between plates: F proportional to delta while th
         CHECK_CLOSE(log_log_slope(delta, force).value(), 1.0, (Tolerance{0, 0.01}));
     }
 }
+
+TEST_CASE(
+    "elastic tetrahedra (N = 162) at large compression: F ~ delta^1.5 +- 0.1 for 0.05 <= delta/D <= 0.2 "
+    "[DPM sec. 9.3.4, Fig. 9.11(d)]")
+{
+    Compression3dOptions o; // geodesic162, E = 1 k_c/sigma, nu = 0.3, k_p = 4 k_c
+    o.schedule.delta_min = 0.05;
+    o.schedule.delta_max = 0.2;
+    o.schedule.steps = 7;
+    o.schedule.force_tolerance = 1e-8;
+    const Compression3dResult r = compress3d_tetrahedra(o);
+    std::vector<double> delta, force;
+    for (const auto& s : r.compression.samples) {
+        CHECK(s.top_contacts >= 6); // the pole vertex and at least its first ring: a contact patch
+        delta.push_back(s.delta_over_d);
+        force.push_back(s.force);
+    }
+    // The paper's alpha = 1.5 "for sufficiently large displacements" (decision dpm-compress3d-windows). The
+    // tolerance is the contact staircase: rings of vertices reach the plate one at a time and the local
+    // exponent swings between 1.1 and 2.3 inside the window (measured fit 1.449). It holds at the paper's
+    // mesh only: the exponent drifts with the mesh (642 vertices: 1.34), see DPM-Fig9.11-meshes.
+    CHECK_CLOSE(log_log_slope(delta, force).value(), 1.5, (Tolerance{0, 0.1}));
+}
+
+TEST_CASE("elastic shell (N = 162): F proportional to delta over the range in which the pole vertex alone "
+          "touches, delta/D <= 0.1 [DPM sec. 9.3.4, Fig. 9.11(d)]")
+{
+    Compression3dOptions o; // geodesic162, k_v = 1e-3, k_a = 1, k_b = 1 (decision dpm-compress3d-shell)
+    o.schedule.delta_min = 1e-3;
+    o.schedule.delta_max = 0.1;
+    o.schedule.steps = 6;
+    o.schedule.force_tolerance = 1e-8;
+    const Compression3dResult r = compress3d_shell(o);
+    std::vector<double> delta, force;
+    for (const auto& s : r.compression.samples) {
+        CHECK(s.top_contacts == 1);
+        delta.push_back(s.delta_over_d);
+        force.push_back(s.force);
+    }
+    // A point load on a shell: linear at small delta; the local exponent rises from 1.00 to 1.10 at
+    // delta/D = 0.1 (geometric stiffening of the indented cap); measured fit 1.022. 0.1: the paper's
+    // "F~ proportional to delta~ over a large range".
+    CHECK_CLOSE(log_log_slope(delta, force).value(), 1.0, (Tolerance{0, 0.1}));
+}
