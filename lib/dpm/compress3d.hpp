@@ -23,7 +23,7 @@ struct Compression3dOptions
     std::string mesh = "geodesic162";     // shell and tetrahedra: surface mesh (mesh_from_name)
     double E = 1.0, nu = 0.3;             // tetrahedra: Young's modulus [k_c/sigma] and Poisson ratio
     double kv = 1e-3, ka = 1.0, kb = 1.0; // shell: k_v [k_c/sigma^4], k_a [k_c/sigma^2], k_b [k_c sigma^2]
-    int network_nodes = 1000;             // network: nodes (paper: 3765)
+    int network_nodes = 2000;             // network: nodes (paper: 3765)
     double cutoff = 1.83;                 // network: spring cutoff [node spacing]
     double network_k = 1.0;               // network: spring k / k_c
     std::uint64_t seed = 1;               // network: node placement

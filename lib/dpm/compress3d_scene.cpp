@@ -58,9 +58,14 @@ void run_compress3d(const Parameters& p, RunContext& context)
     o.schedule.delta_max = p.real("delta_max");
     o.schedule.steps = static_cast<int>(p.integer("steps"));
     o.schedule.force_tolerance = p.real("force_tolerance");
-    if (o.schedule.delta_min >= o.schedule.delta_max)
-        throw InputError("delta_min = " + std::to_string(o.schedule.delta_min) +
-                         ": must be below delta_max = " + std::to_string(o.schedule.delta_max));
+    const auto require_below = [&p](const std::string& low, const std::string& high) {
+        if (p.real(low) >= p.real(high))
+            throw InputError("parameter '" + low + "' = '" + std::to_string(p.real(low)) + "' is not below " +
+                             high + " = " + std::to_string(p.real(high)) + "; allowed: " + low + " < " +
+                             high);
+    };
+    require_below("delta_min", "delta_max");
+    require_below("fit_min", "fit_max");
     const std::string model = p.choice("model");
     if (model == "spring_network") context.record_seed(o.seed);
     const Compression3dResult r = model == "tetrahedra" ? compress3d_tetrahedra(o)
@@ -120,7 +125,7 @@ std::vector<ParameterSpec> compress3d_parameters()
         ParameterSpec::real("ka", 1.0, "k_c/sigma^2", "shell: face-area stiffness k_a of eq. (9.2)")
             .positive(),
         ParameterSpec::real("kb", 1.0, "k_c sigma^2", "shell: bending stiffness k_b of eq. (9.2)").positive(),
-        ParameterSpec::integer("network_nodes", 1000, "1", "network: nodes (paper: 3765)").at_least(50),
+        ParameterSpec::integer("network_nodes", 2000, "1", "network: nodes (paper: 3765)").at_least(50),
         ParameterSpec::real("cutoff", 1.83, "node spacing", "network: springs join nodes closer than this")
             .positive(),
         ParameterSpec::integer("seed", 1, "1", "network: seed of the interior node placement").non_negative(),
