@@ -251,3 +251,20 @@ TEST_CASE("elastic shell (N = 162): F proportional to delta over the range in wh
     // "F~ proportional to delta~ over a large range".
     CHECK_CLOSE(log_log_slope(delta, force).value(), 1.0, (Tolerance{0, 0.1}));
 }
+
+TEST_CASE("compression meshes: a vertex and its antipode on the z axis, mean edge = sigma = 1 [decision "
+          "dpm-compress3d-units]")
+{
+    for (const std::string name : {"icosahedron", "geodesic42", "geodesic162", "geodesic642"}) {
+        const TriangleMesh mesh = compression_mesh(name);
+        const Eigen::VectorXd z = mesh.vertices.row(2).transpose();
+        const double R = mesh.vertices.col(0).norm();
+        // A rotation of a unit-sphere mesh followed by one scaling: round-off of a few operations.
+        CHECK_CLOSE(mesh.vertices(2, 0), R, (Tolerance{10 * round_off, 0}));
+        CHECK_CLOSE(z.minCoeff(), -R, (Tolerance{10 * round_off, 0}));
+        double edge = 0;
+        for (const MeshEdge& e : mesh.edges)
+            edge += (mesh.vertices.col(e.a) - mesh.vertices.col(e.b)).norm();
+        CHECK_CLOSE(edge / mesh.edge_count(), 1.0, (Tolerance{mesh.edge_count() * round_off, 0}));
+    }
+}
