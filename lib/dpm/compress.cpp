@@ -4,8 +4,9 @@
 #include "dpm/modes.hpp"
 #include "dpm/spring_network.hpp"
 
+#include <gsl/gsl_fit.h>
+
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <string>
 
@@ -13,61 +14,61 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Energy of the body alone, adding its gradient when asked.
-using BodyEnergy = std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*)>;
-
-// Body energy plus the plates' repulsion, with gradient (FIRE needs no Hessian).
+// Body energy plus the plates' repulsion (normal to axis Dim - 1), with gradient.
+template <int Dim>
 struct BetweenPlates
 {
     const BodyEnergy& body;
     double kp, half_sigma, top;
-    double energy(const Eigen::VectorXd& x, Eigen::VectorXd* gradient, double* top_force) const
+    double energy(const Eigen::VectorXd& x, Eigen::VectorXd* gradient, double* top_force = nullptr,
+                  int* top_contacts = nullptr) const
     {
         double u = body(x, gradient);
         if (top_force) *top_force = 0;
-        for (Eigen::Index v = 0; v < x.size() / 2; ++v) {
+        if (top_contacts) *top_contacts = 0;
+        for (Eigen::Index v = 0; v < x.size() / Dim; ++v) {
             const std::array<int, 1> point{static_cast<int>(v)};
-            const double y = x(2 * v + 1);
-            if (y < half_sigma) // Theta(sigma/2 - r), bottom plate at y = 0
-                u += add_local_term<2, 1>(PlateEnergy{kp, half_sigma, 0.0, 1.0}, point,
-                                          gather<2, 1>(x, point), gradient, nullptr);
-            if (top - y < half_sigma) { // top plate
-                u += add_local_term<2, 1>(PlateEnergy{kp, half_sigma, top, -1.0}, point,
-                                          gather<2, 1>(x, point), gradient, nullptr);
-                if (top_force) *top_force += kp * (half_sigma - (top - y)); // pushes the plate up
+            const double height = x(Dim * v + Dim - 1);
+            if (height < half_sigma) // Theta(sigma/2 - r), bottom plate at height 0
+                u += add_local_term<Dim, 1>(PlateEnergy{kp, half_sigma, 0.0, 1.0}, point,
+                                            gather<Dim, 1>(x, point), gradient, nullptr);
+            if (top - height < half_sigma) { // top plate
+                u += add_local_term<Dim, 1>(PlateEnergy{kp, half_sigma, top, -1.0}, point,
+                                            gather<Dim, 1>(x, point), gradient, nullptr);
+                if (top_force) *top_force += kp * (half_sigma - (top - height)); // pushes the plate up
+                if (top_contacts) ++*top_contacts;
             }
         }
         return u;
     }
 };
 
-// The protocol: the body (points of diameter sigma) rests on the bottom plate (lowest point at y = sigma/2);
-// the top plate starts touching its highest point and moves down by delta D, log-spaced from delta_min to
-// delta_max; FIRE after each step with dt_max = 0.5/sqrt(lambda_max) (lambda_max: stiffest mode of the body
-// or the plate spring k_p, unit masses).
+} // namespace
+
+template <int Dim>
 CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& body, double sigma,
-                                          double lambda_max, const CompressionOptions& o)
+                                          double lambda_max, const PlateSchedule& o)
 {
-    const auto ys = x.reshaped(2, x.size() / 2).row(1);
-    const double lift = 0.5 * sigma - ys.minCoeff();
-    for (Eigen::Index v = 0; v < x.size() / 2; ++v)
-        x(2 * v + 1) += lift;
+    const auto heights = x.reshaped(Dim, x.size() / Dim).row(Dim - 1);
+    const double lift = 0.5 * sigma - heights.minCoeff();
+    for (Eigen::Index v = 0; v < x.size() / Dim; ++v)
+        x(Dim * v + Dim - 1) += lift;
     CompressionResult out;
-    const double h0 = ys.maxCoeff() + 0.5 * sigma;
+    const double h0 = heights.maxCoeff() + 0.5 * sigma;
     out.diameter = h0;
     FireOptions fire;
     fire.dt_max = 0.5 / std::sqrt(std::max(o.kp, lambda_max));
     fire.dt_initial = 0.25 * fire.dt_max;
-    fire.force_tolerance = 1e-12;
+    fire.force_tolerance = o.force_tolerance;
     fire.max_iterations = 5'000'000;
     for (int s = 0; s < o.steps; ++s) {
         const double delta = o.delta_min * std::pow(o.delta_max / o.delta_min, double(s) / (o.steps - 1));
-        const BetweenPlates plates{body, o.kp, 0.5 * sigma, h0 - delta * out.diameter};
+        const BetweenPlates<Dim> plates{body, o.kp, 0.5 * sigma, h0 - delta * out.diameter};
         const FireResult r = fire_minimise(
             x,
             [&plates](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
                 f.setZero(y.size());
-                const double u = plates.energy(y, &f, nullptr);
+                const double u = plates.energy(y, &f);
                 f = -f;
                 return u;
             },
@@ -78,13 +79,17 @@ CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& b
                                      std::to_string(r.force_rms) + ")",
                                  s, "step too large for the body's stiffness");
         double force = 0;
-        plates.energy(x, nullptr, &force);
-        out.samples.push_back({delta, force, r.iterations});
+        int contacts = 0;
+        plates.energy(x, nullptr, &force, &contacts);
+        out.samples.push_back({delta, force, r.iterations, contacts});
     }
     return out;
 }
 
-} // namespace
+template CompressionResult compress_between_plates<2>(Eigen::VectorXd, const BodyEnergy&, double, double,
+                                                      const PlateSchedule&);
+template CompressionResult compress_between_plates<3>(Eigen::VectorXd, const BodyEnergy&, double, double,
+                                                      const PlateSchedule&);
 
 CompressionResult compress_shell(const CompressionOptions& o)
 {
@@ -103,7 +108,8 @@ CompressionResult compress_shell(const CompressionOptions& o)
     const BodyEnergy body = [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return total_energy(system, y, gradient, nullptr);
     };
-    return compress_between_plates(x, body, sigma, vibrational_modes(system, x).eigenvalues.maxCoeff(), o);
+    return compress_between_plates<2>(x, body, sigma, vibrational_modes(system, x).eigenvalues.maxCoeff(),
+                                      o.schedule());
 }
 
 CompressionResult compress_spring_network(const CompressionOptions& o)
@@ -115,7 +121,7 @@ CompressionResult compress_spring_network(const CompressionOptions& o)
     };
     // A node joins at most 6 springs k (lengths ~ 1): lambda_max <= 4 * 6 k / 2 = 12 k (Gershgorin, unit
     // masses).
-    CompressionResult out = compress_between_plates(network.x, body, 1.0, 12 * o.network_k, o);
+    CompressionResult out = compress_between_plates<2>(network.x, body, 1.0, 12 * o.network_k, o.schedule());
     out.springs = static_cast<int>(network.springs.size());
     return out;
 }
@@ -124,6 +130,19 @@ double cylinder_compression(double force_tilde, double d_tilde)
 {
     const double pi = std::numbers::pi;
     return 4 * force_tilde * d_tilde / pi * (1 + std::log(pi / (d_tilde * d_tilde * d_tilde * force_tilde)));
+}
+
+std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
+{
+    if (x.size() < 3) return std::nullopt;
+    std::vector<double> lx, ly;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        lx.push_back(std::log(x[k]));
+        ly.push_back(std::log(y[k]));
+    }
+    double c0, c1, c00, c01, c11, sumsq;
+    gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+    return c1;
 }
 
 } // namespace softgrain::dpm

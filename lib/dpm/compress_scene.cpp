@@ -7,29 +7,14 @@
 #include "dpm/compress.hpp"
 #include "dpm/spring_network.hpp"
 
-#include <gsl/gsl_fit.h>
-
 #include <cmath>
 
 namespace softgrain::dpm {
 
-namespace {
-
-// Slope of ln y against ln x (GSL least squares); null with fewer than 3 points.
-nlohmann::json log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
+nlohmann::json json_or_null(std::optional<double> value)
 {
-    if (x.size() < 3) return nullptr;
-    std::vector<double> lx, ly;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        lx.push_back(std::log(x[k]));
-        ly.push_back(std::log(y[k]));
-    }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-    return c1;
+    return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
-
-} // namespace
 
 void run_compress2d(const Parameters& p, RunContext& context)
 {
@@ -76,9 +61,9 @@ void run_compress2d(const Parameters& p, RunContext& context)
     s["diameter"] = r.diameter;
     s["E"] = E;
     s["nu"] = nu;
-    s["small_strain_exponent"] = log_log_slope(fit_delta, fit_force);
+    s["small_strain_exponent"] = json_or_null(log_log_slope(fit_delta, fit_force));
     // The exponent of eq. (9.14) over the same forces: its local slope 1 + 1/(1 + ln(pi/(D~^3 F~))) > 1.
-    s["eq_9_14_exponent"] = log_log_slope(fit_delta_cylinder, fit_force);
+    s["eq_9_14_exponent"] = json_or_null(log_log_slope(fit_delta_cylinder, fit_force));
     if (network) {
         s["network_nodes"] = o.network_nodes;
         s["network_springs"] = r.springs;

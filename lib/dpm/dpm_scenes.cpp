@@ -3,6 +3,7 @@
 
 #include "dpm/boundary_jam_scene.hpp"
 #include "dpm/box_compress_scene.hpp"
+#include "dpm/compress3d_scene.hpp"
 #include "dpm/compress_scene.hpp"
 #include "dpm/crystal_scene.hpp"
 #include "dpm/jam_scene.hpp"
@@ -46,6 +47,11 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two plates, "
               "F_a against delta/D, its small-strain exponent and eq. (9.14) (Fig. 9.10)",
               dpm::compress2d_parameters(), dpm::run_compress2d});
+    registry.add(Scene{
+        "dpm.compress3d",
+        "DPM sec. 9.3.4: elastic tetrahedra (eqs. 9.15-9.17), an elastic shell or a spring-network ball "
+        "compressed between two plates, F~ against delta/D and its exponents (Fig. 9.11)",
+        dpm::compress3d_parameters(), dpm::run_compress3d});
     registry.add(Scene{"dpm.compress_box",
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
                        "box with repulsive walls: snapshots, overlaps, facets",

@@ -2,7 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "dpm/shape_energy.hpp"
+#include "dpm/local_derivatives.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,16 +59,93 @@ SpringNetwork disordered_triangular_disk(int nodes, double jitter, double k, std
     return network;
 }
 
-double spring_network_energy(const SpringNetwork& network, const Eigen::VectorXd& x,
-                             Eigen::VectorXd* gradient)
+namespace {
+
+template <int Dim>
+double springs_energy(const SpringNetwork& network, const Eigen::VectorXd& x, Eigen::VectorXd* gradient)
 {
     double u = 0;
     for (const Spring& s : network.springs) {
         const std::array<int, 2> ends{s.i, s.j};
-        u += add_local_term<2, 2>(EdgeLengthEnergy{network.k, s.rest_length}, ends, gather<2, 2>(x, ends),
-                                  gradient, nullptr);
+        u += add_local_term<Dim, 2>(SpringEnergy<Dim>{network.k, s.rest_length}, ends,
+                                    gather<Dim, 2>(x, ends), gradient, nullptr);
     }
     return u;
+}
+
+// n points spread evenly on the sphere of radius R (Fibonacci spiral).
+std::vector<Eigen::Vector3d> fibonacci_sphere(int n, double R)
+{
+    std::vector<Eigen::Vector3d> points;
+    const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
+    for (int k = 0; k < n; ++k) {
+        const double z = 1 - (2 * k + 1.0) / n, rho = std::sqrt(1 - z * z), phi = golden * k;
+        points.push_back(R * Eigen::Vector3d(rho * std::cos(phi), rho * std::sin(phi), z));
+    }
+    return points;
+}
+
+} // namespace
+
+double spring_network_energy(const SpringNetwork& network, const Eigen::VectorXd& x,
+                             Eigen::VectorXd* gradient)
+{
+    return network.dim == 3 ? springs_energy<3>(network, x, gradient)
+                            : springs_energy<2>(network, x, gradient);
+}
+
+SpringNetwork disordered_sphere_network(int nodes, double cutoff, double k, std::uint64_t seed)
+{
+    if (nodes < 50)
+        throw InputError("network_nodes = " + std::to_string(nodes) +
+                         ": a 3D network ball needs at least 50");
+    // Radius R (spacing a = 1): 4 pi R^2 surface nodes plus 4/3 pi (R - 0.35)^3 interior nodes = nodes.
+    const double pi = std::numbers::pi, gap = 0.35;
+    const auto count = [&](double R) { return 4 * pi * R * R + 4.0 / 3.0 * pi * std::pow(R - gap, 3); };
+    double lo = 1, hi = std::cbrt(double(nodes));
+    for (int it = 0; it < 60; ++it)
+        (count(0.5 * (lo + hi)) < nodes ? lo : hi) = 0.5 * (lo + hi);
+    const double R = 0.5 * (lo + hi);
+    const int surface = static_cast<int>(std::lround(4 * pi * R * R));
+    std::vector<Eigen::Vector3d> points = fibonacci_sphere(surface, R);
+    // Interior: random sequential addition, minimum distance 2 gap to every node placed.
+    Rng rng(seed);
+    const double inner = R - gap, min_distance = 2 * gap;
+    long attempts = 0;
+    while (static_cast<int>(points.size()) < nodes) {
+        if (++attempts > 1000L * nodes)
+            throw NumericalError("interior nodes of the network ball placed: " +
+                                     std::to_string(points.size()),
+                                 attempts, "random sequential addition saturated");
+        const Eigen::Vector3d p(rng.uniform(-inner, inner), rng.uniform(-inner, inner),
+                                rng.uniform(-inner, inner));
+        if (p.norm() > inner) continue;
+        const bool free = std::none_of(points.begin(), points.end(), [&](const Eigen::Vector3d& q) {
+            return (p - q).norm() < min_distance;
+        });
+        if (free) points.push_back(p);
+    }
+    SpringNetwork network;
+    network.k = k;
+    network.dim = 3;
+    network.x.resize(3 * static_cast<Eigen::Index>(points.size()));
+    for (std::size_t v = 0; v < points.size(); ++v)
+        network.x.segment<3>(3 * static_cast<Eigen::Index>(v)) = points[v];
+    for (int i = 0; i < nodes; ++i)
+        for (int j = i + 1; j < nodes; ++j) {
+            const double l =
+                (points[static_cast<std::size_t>(i)] - points[static_cast<std::size_t>(j)]).norm();
+            if (l < cutoff) network.springs.push_back({i, j, l});
+        }
+    return network;
+}
+
+double affine_network_young_modulus(const SpringNetwork& network, double volume)
+{
+    double sum = 0;
+    for (const Spring& s : network.springs)
+        sum += network.k * s.rest_length * s.rest_length;
+    return sum / (6 * volume);
 }
 
 } // namespace softgrain::dpm

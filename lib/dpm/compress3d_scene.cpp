@@ -1,0 +1,148 @@
+// dpm.compress3d: one 3D body squeezed between two plates (section 9.3.4, Fig. 9.11): the elastic tetrahedra
+// of eqs. (9.15)-(9.17), an elastic shell (eq. 9.2) or a spring-network ball; F~ = F_a (1 - nu^2)/(E D^2)
+// against delta~ = delta/D, and the exponents of F~ ~ delta~^alpha at small and large compression and while
+// the pole vertex alone touches the plate (decision dpm-compress3d-windows).
+#include "dpm/compress3d_scene.hpp"
+
+#include "core/errors.hpp"
+#include "core/output.hpp"
+#include "dpm/compress3d.hpp"
+#include "dpm/compress_scene.hpp"
+
+#include <cmath>
+
+namespace softgrain::dpm {
+
+namespace {
+
+// The exponent fitted to the samples with delta/D in [low, high] and F > 0.
+std::optional<double> exponent_in_window(const CompressionResult& r, double low, double high)
+{
+    std::vector<double> delta, force;
+    for (const CompressionSample& s : r.samples)
+        if (s.delta_over_d >= low * (1 - 1e-12) && s.delta_over_d <= high * (1 + 1e-12) && s.force > 0) {
+            delta.push_back(s.delta_over_d);
+            force.push_back(s.force);
+        }
+    return log_log_slope(delta, force);
+}
+
+// The exponent fitted to the samples in which only the pole vertex touches the top plate.
+std::optional<double> pole_contact_exponent(const CompressionResult& r)
+{
+    std::vector<double> delta, force;
+    for (const CompressionSample& s : r.samples)
+        if (s.top_contacts == 1) {
+            delta.push_back(s.delta_over_d);
+            force.push_back(s.force);
+        }
+    return log_log_slope(delta, force);
+}
+
+} // namespace
+
+void run_compress3d(const Parameters& p, RunContext& context)
+{
+    Compression3dOptions o;
+    o.mesh = p.choice("mesh");
+    o.E = p.real("E");
+    o.nu = p.real("nu");
+    o.kv = p.real("kv");
+    o.ka = p.real("ka");
+    o.kb = p.real("kb");
+    o.network_nodes = static_cast<int>(p.integer("network_nodes"));
+    o.cutoff = p.real("cutoff");
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    o.schedule.kp = p.real("kp");
+    o.schedule.delta_min = p.real("delta_min");
+    o.schedule.delta_max = p.real("delta_max");
+    o.schedule.steps = static_cast<int>(p.integer("steps"));
+    o.schedule.force_tolerance = p.real("force_tolerance");
+    const auto require_below = [&p](const std::string& low, const std::string& high) {
+        if (p.real(low) >= p.real(high))
+            throw InputError("parameter '" + low + "' = '" + std::to_string(p.real(low)) + "' is not below " +
+                             high + " = " + std::to_string(p.real(high)) + "; allowed: " + low + " < " +
+                             high);
+    };
+    require_below("delta_min", "delta_max");
+    require_below("fit_min", "fit_max");
+    const std::string model = p.choice("model");
+    if (model == "spring_network") context.record_seed(o.seed);
+    const Compression3dResult r = model == "tetrahedra" ? compress3d_tetrahedra(o)
+                                  : model == "shell"    ? compress3d_shell(o)
+                                                        : compress3d_network(o);
+    const CompressionResult& c = r.compression;
+    context.count_steps(c.iterations);
+
+    const double scale = (1 - r.nu * r.nu) / (r.E * c.diameter * c.diameter);
+    auto& table = context.table(
+        "force.dat", {{"delta", "D", "compression delta~ = delta / D"},
+                      {"F", "k_c sigma", "force F_a on the top plate"},
+                      {"F_tilde", "1", "F~ = F_a (1 - nu^2)/(E D^2)"},
+                      {"local_exponent", "1", "d ln F / d ln delta between this and the previous step"},
+                      {"contacts", "1", "vertices touching the top plate"},
+                      {"iterations", "1", "FIRE iterations of this step"}});
+    for (std::size_t k = 0; k < c.samples.size(); ++k) {
+        const CompressionSample& s = c.samples[k];
+        double local = std::nan("");
+        if (k > 0 && s.force > 0 && c.samples[k - 1].force > 0)
+            local = std::log(s.force / c.samples[k - 1].force) /
+                    std::log(s.delta_over_d / c.samples[k - 1].delta_over_d);
+        table.row(
+            {s.delta_over_d, s.force, s.force * scale, local, double(s.top_contacts), double(s.iterations)});
+    }
+    auto& s = context.summary();
+    s["diameter"] = c.diameter;
+    s["E"] = r.E;
+    s["nu"] = r.nu;
+    s["vertices"] = r.vertices;
+    s["small_strain_exponent"] =
+        json_or_null(exponent_in_window(c, o.schedule.delta_min, p.real("small_fit_max")));
+    s["large_strain_exponent"] = json_or_null(exponent_in_window(c, p.real("fit_min"), p.real("fit_max")));
+    s["pole_contact_exponent"] = json_or_null(pole_contact_exponent(c));
+    s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
+    s["contacts_at_max"] = c.samples.back().top_contacts;
+    s["F_tilde_at_max"] = c.samples.back().force * scale;
+    if (model == "spring_network") {
+        s["network_springs"] = r.springs;
+        s["coordination"] = 2.0 * r.springs / r.vertices;
+    }
+}
+
+std::vector<ParameterSpec> compress3d_parameters()
+{
+    return {
+        ParameterSpec::choice("model", "tetrahedra", {"tetrahedra", "shell", "spring_network"},
+                              "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
+                              "eq. 9.2) or spring-network ball (Fig. 9.11a)"),
+        ParameterSpec::choice(
+            "mesh", "geodesic162", {"icosahedron", "geodesic42", "geodesic162", "geodesic642"},
+            "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642; paper's shell: 162)"),
+        ParameterSpec::real("E", 1.0, "k_c/sigma", "tetrahedra: Young's modulus of each tetrahedron")
+            .positive(),
+        ParameterSpec::real("nu", 0.3, "1", "tetrahedra: Poisson ratio").at_least(0.0).below(0.5),
+        ParameterSpec::real("kv", 1e-3, "k_c/sigma^4", "shell: volume stiffness k_v of eq. (9.2)").positive(),
+        ParameterSpec::real("ka", 1.0, "k_c/sigma^2", "shell: face-area stiffness k_a of eq. (9.2)")
+            .positive(),
+        ParameterSpec::real("kb", 1.0, "k_c sigma^2", "shell: bending stiffness k_b of eq. (9.2)").positive(),
+        ParameterSpec::integer("network_nodes", 2000, "1", "network: nodes (paper: 3765)").at_least(50),
+        ParameterSpec::real("cutoff", 1.83, "node spacing", "network: springs join nodes closer than this")
+            .positive(),
+        ParameterSpec::integer("seed", 1, "1", "network: seed of the interior node placement").non_negative(),
+        ParameterSpec::real("kp", 4.0, "k_c", "plate-vertex spring k_p (paper: 4 k_c)").positive(),
+        ParameterSpec::integer("steps", 24, "1", "compression steps, log-spaced").at_least(3),
+        ParameterSpec::real("delta_min", 1e-3, "D", "smallest compression delta/D").positive(),
+        ParameterSpec::real("delta_max", 0.2, "D", "largest compression delta/D").positive().below(0.5),
+        ParameterSpec::real("small_fit_max", 3e-3, "D",
+                            "small_strain_exponent: fit over delta/D from delta_min up to this")
+            .positive(),
+        ParameterSpec::real("fit_min", 0.05, "D", "large_strain_exponent: fit over delta/D from this ...")
+            .positive(),
+        ParameterSpec::real("fit_max", 0.2, "D", "... up to this").positive(),
+        ParameterSpec::real("force_tolerance", 1e-8, "k_c sigma",
+                            "FIRE stops at this rms force per degree of freedom")
+            .positive(),
+    };
+}
+
+} // namespace softgrain::dpm
