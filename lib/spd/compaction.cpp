@@ -276,11 +276,7 @@ CompactionResult compaction(const CompactionSetup& setup,
         snap.height = wall_height(a, a.top);
         snap.strain = std::log(result.height0 / snap.height);
         for (int p : a.particles) {
-            const Shell& s = model.shells()[p];
-            std::vector<Vec2> vertices;
-            for (int i = s.first; i < s.first + s.count; ++i)
-                vertices.push_back(model.vertex(i));
-            snap.particles.push_back(std::move(vertices));
+            snap.particles.push_back(model.outline(p));
             snap.energy.push_back(model.elastic_energy(p));
         }
         result.snapshots.push_back(std::move(snap));

@@ -68,6 +68,15 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
     return static_cast<int>(shells_.size()) - 1;
 }
 
+std::vector<Vec2> ShellModel::outline(int shell) const
+{
+    const Shell& s = shells_[shell];
+    std::vector<Vec2> vertices;
+    for (int i = s.first; i < s.first + s.count; ++i)
+        vertices.push_back(vertex(i));
+    return vertices;
+}
+
 void ShellModel::freeze(int vertex, int component)
 {
     inverse_mass_[2 * vertex + component] = 0.0;

@@ -129,6 +129,7 @@ class ShellModel
     double
     max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
     Vec2 vertex(int i) const { return {x_[2 * i], x_[2 * i + 1]}; }
+    std::vector<Vec2> outline(int shell) const; // the vertex positions of a shell, in order [m]
     Vec2 velocity(int i) const { return {v_[2 * i], v_[2 * i + 1]}; }
     Vec2 force(int i) const { return {f_[2 * i], f_[2 * i + 1]}; }
     // Sum of contact forces received by the vertices of `shell` from other shells, and per vertex.

@@ -402,11 +402,7 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
         snap.strain = std::log(snap.height / tissue.height0);
         snap.broken = model.broken_links();
         for (int c : tissue.cells) {
-            const Shell& s = model.shells()[c];
-            std::vector<Vec2> vertices;
-            for (int i = s.first; i < s.first + s.count; ++i)
-                vertices.push_back(model.vertex(i));
-            snap.cells.push_back(std::move(vertices));
+            snap.cells.push_back(model.outline(c));
             snap.energy.push_back(model.elastic_energy(c));
         }
         result.snapshots.push_back(std::move(snap));
