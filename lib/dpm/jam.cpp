@@ -98,7 +98,7 @@ JamResult jam(const JamOptions& o)
     }
 
     const bool rough_disks = o.model == "rough_disk";
-    FireOptions fire;
+    FireOptions& fire = out.fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
