@@ -46,6 +46,11 @@ struct DpmSystem
     // Lees-Edwards shear strain gamma of the box (section 9.4.3): the image above is shifted by gamma L_y in
     // x.
     double lees_edwards_strain = 0;
+    // Candidate particle pairs of the interaction from a cell list over the particle centres (O(N), cells of
+    // the largest pair reach) instead of all N(N-1)/2 pairs. Both visit the same pairs in the same order, so
+    // energies, forces and Hessians are bit-identical. Not used under Lees-Edwards strain (the cell list's
+    // images are those of the plain periodic box): all pairs are visited then.
+    bool cell_list = false;
 
     int vertex_count() const
     {
