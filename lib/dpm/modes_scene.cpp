@@ -92,8 +92,7 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
             const Particle& p = system.particles[q];
             const Eigen::Map<const Eigen::Matrix2Xd> r(x.data() + 2 * p.first, 2, p.count);
             const Eigen::Vector2d c = r.rowwise().mean();
-            const Eigen::Vector2d L = *system.box;
-            const Eigen::Vector2d shift = -(L.array() * (c.array() / L.array()).floor()).matrix();
+            const Eigen::Vector2d shift = wrap_into_box(c, *system.box) - c;
             for (int i = 0; i <= p.count; ++i) {
                 const int v = p.first + i % p.count;
                 field.row({double(panel), double(q), x(2 * v) + shift.x(), x(2 * v + 1) + shift.y(), u(2 * v),

@@ -12,13 +12,12 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Disk centres wrapped into the box [0, L)^2, for drawing.
+// Disk centres wrapped into the box, for drawing.
 void write_disks(Table& table, const DpmSystem& s, const PackingState& state, int which,
                  const NetworkChange& change)
 {
     for (std::size_t m = 0; m < s.particles.size(); ++m) {
-        const Eigen::Vector2d c = state.x.segment<2>(2 * m);
-        const Eigen::Vector2d w = c - (state.box.array() * (c.array() / state.box.array()).floor()).matrix();
+        const Eigen::Vector2d w = wrap_into_box(state.x.segment<2>(2 * m), state.box);
         table.row(
             {double(which), double(m), w.x(), w.y(), s.particles[m].sigma, change.changed[m] ? 1.0 : 0.0});
     }
@@ -31,8 +30,7 @@ void write_contacts(Table& table, const PackingState& state, int which, const Co
 {
     for (const auto& [i, j] : state.contacts) {
         const Eigen::Vector2d ci = state.x.segment<2>(2 * i);
-        const Eigen::Vector2d wi =
-            ci - (state.box.array() * (ci.array() / state.box.array()).floor()).matrix();
+        const Eigen::Vector2d wi = wrap_into_box(ci, state.box);
         const Eigen::Vector2d d = minimum_image(state.x.segment<2>(2 * j) - ci, state.box);
         table.row({double(which), double(i), double(j), wi.x(), wi.y(), d.x(), d.y(),
                    other.contains({i, j}) ? 0.0 : double(own_kind)});

@@ -80,6 +80,12 @@ inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vect
     return d - (L.array() * (d.array() / L.array()).round()).matrix();
 }
 
+// The periodic image of a point in the box [0, L_x) x [0, L_y) (for drawing packings).
+inline Eigen::Vector2d wrap_into_box(const Eigen::Vector2d& p, const Eigen::Vector2d& L)
+{
+    return p - (L.array() * (p.array() / L.array()).floor()).matrix();
+}
+
 // Minimum image under Lees-Edwards boundaries with shear strain gamma: the row of images n_y boxes up is
 // shifted by n_y gamma L_y in x. First the y image, then x: d - n_y (gamma L_y, L_y) - n_x (L_x, 0).
 inline Eigen::Vector2d lees_edwards_image(Eigen::Vector2d d, const Eigen::Vector2d& L, double gamma)
