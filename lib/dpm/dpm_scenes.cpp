@@ -9,6 +9,7 @@
 #include "dpm/jam_scene.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/packing_scene.hpp"
+#include "dpm/rearrangement_scene.hpp"
 #include "dpm/scenes3d.hpp"
 #include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
@@ -42,6 +43,10 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
               "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
               dpm::jam_scene_parameters(), dpm::run_jam});
+    registry.add(Scene{"dpm.rearrangement",
+                       "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
+                       "smooth-disk packing compressed from onset in steps Delta phi; both networks",
+                       dpm::rearrangement_parameters(), dpm::run_rearrangement});
     registry.add(
         Scene{"dpm.compress2d",
               "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two plates, "

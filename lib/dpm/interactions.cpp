@@ -3,6 +3,7 @@
 #include "dpm/system.hpp"
 
 #include "core/errors.hpp"
+#include "core/neighbour_list.hpp"
 
 #include <algorithm>
 #include <string>
@@ -131,20 +132,33 @@ double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eig
         throw NumericalError("periodic box side " + std::to_string(system.box->minCoeff()) +
                                  " below twice the largest pair reach " + std::to_string(largest_reach),
                              0, "too few particles for the box; use more particles");
-    for (std::size_t m = 0; m < particles.size(); ++m)
-        for (std::size_t b = m + 1; b < particles.size(); ++b) {
-            const Particle &pm = particles[m], &pb = particles[b];
-            const Eigen::Vector2d shift = image_shift(system, circles[m].first, circles[b].first);
-            const double reach = circles[m].second + circles[b].second + 0.5 * (pm.sigma + pb.sigma);
-            if ((circles[b].first + shift - circles[m].first).squaredNorm() >= reach * reach) continue;
-            if (system.interaction == InteractionKind::rough)
-                energy += rough_pair(system, pm, pb, shift, x, gradient, hessian, virial);
-            else if (system.interaction == InteractionKind::smooth)
-                energy += smooth_vertex_particle(system, pm, pb, shift, x, gradient, hessian, smooth_terms,
-                                                 virial) +
-                          smooth_vertex_particle(system, pb, pm, -shift, x, gradient, hessian, smooth_terms,
-                                                 virial);
-        }
+    const auto interact = [&](std::size_t m, std::size_t b) {
+        const Particle &pm = particles[m], &pb = particles[b];
+        const Eigen::Vector2d shift = image_shift(system, circles[m].first, circles[b].first);
+        const double reach = circles[m].second + circles[b].second + 0.5 * (pm.sigma + pb.sigma);
+        if ((circles[b].first + shift - circles[m].first).squaredNorm() >= reach * reach) return;
+        if (system.interaction == InteractionKind::rough)
+            energy += rough_pair(system, pm, pb, shift, x, gradient, hessian, virial);
+        else if (system.interaction == InteractionKind::smooth)
+            energy +=
+                smooth_vertex_particle(system, pm, pb, shift, x, gradient, hessian, smooth_terms, virial) +
+                smooth_vertex_particle(system, pb, pm, -shift, x, gradient, hessian, smooth_terms, virial);
+    };
+    if (system.cell_list && system.lees_edwards_strain == 0 && !particles.empty()) {
+        // Every pair within reach is closer than the largest reach: the list holds them all, sorted (m < b)
+        // as the all-pairs loop visits them.
+        Points<2> centres(2, particles.size());
+        for (std::size_t m = 0; m < particles.size(); ++m)
+            centres.col(m) = circles[m].first;
+        NeighbourList<2> list(largest_reach, 0.0, system.box);
+        list.update(centres);
+        for (const auto& [m, b] : list.pairs())
+            interact(m, b);
+    } else {
+        for (std::size_t m = 0; m < particles.size(); ++m)
+            for (std::size_t b = m + 1; b < particles.size(); ++b)
+                interact(m, b);
+    }
     return energy;
 }
 

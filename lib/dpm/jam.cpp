@@ -31,6 +31,7 @@ JamResult jam(const JamOptions& o)
     DpmSystem& s = out.system;
     s.interaction = InteractionKind::rough;
     s.kc = 1.0;
+    s.cell_list = true; // O(N) pair search; bit-identical to all pairs (verification/dpm/cell_list.cpp)
     Rng rng(o.seed);
     const bool disks = o.model == "smooth_disk";
     if (disks) {
@@ -98,7 +99,7 @@ JamResult jam(const JamOptions& o)
     }
 
     const bool rough_disks = o.model == "rough_disk";
-    FireOptions fire;
+    FireOptions& fire = out.fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;

@@ -9,6 +9,7 @@
 // Bidisperse 50:50 with diameter ratio 1.4 (disks) or polygon-diameter ratio 1.4 (N_small, N_large vertices).
 #pragma once
 
+#include "core/fire.hpp"
 #include "dpm/system.hpp"
 
 #include <cstdint>
@@ -50,6 +51,7 @@ struct JamResult
     Eigen::VectorXd x;
     double pressure_unit = 1; // k_c (disks) or k_a a0
     long fire_iterations = 0;
+    FireOptions fire; // the protocol's FIRE settings, for further steps from its states
 };
 
 JamResult jam(const JamOptions& options);

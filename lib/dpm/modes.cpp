@@ -85,4 +85,42 @@ double participation_ratio(const Eigen::VectorXd& mode)
     return s2 * s2 / (static_cast<double>(N) * s4);
 }
 
+ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+{
+    ModeParts parts;
+    for (const Particle& p : system.particles) {
+        const Eigen::Map<const Eigen::Matrix2Xd> r(x.data() + 2 * p.first, 2, p.count);
+        const Eigen::Map<const Eigen::Matrix2Xd> u(mode.data() + 2 * p.first, 2, p.count);
+        const Eigen::Vector2d c = r.rowwise().mean();
+        const Eigen::Vector2d t = u.rowwise().mean();
+        const Eigen::Matrix2Xd arm = r.colwise() - c;
+        const double inertia = arm.squaredNorm();
+        double omega = 0;
+        if (inertia > 0) {
+            for (int i = 0; i < p.count; ++i)
+                omega += arm(0, i) * u(1, i) - arm(1, i) * u(0, i);
+            omega /= inertia;
+        }
+        Eigen::Matrix2Xd rotation(2, p.count);
+        rotation.row(0) = -omega * arm.row(1);
+        rotation.row(1) = omega * arm.row(0);
+        parts.translation += p.count * t.squaredNorm();
+        parts.rotation += rotation.squaredNorm();
+        parts.deformation += ((u.colwise() - t) - rotation).squaredNorm();
+    }
+    const double total = parts.translation + parts.rotation + parts.deformation;
+    if (total > 0) {
+        parts.translation /= total;
+        parts.rotation /= total;
+        parts.deformation /= total;
+    }
+    return parts;
+}
+
+bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
+                     double lambda, double dr, double factor)
+{
+    return energy_change_along(system, x, mode, dr) > factor * 0.5 * lambda * dr * dr;
+}
+
 } // namespace softgrain::dpm

@@ -31,6 +31,23 @@ int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
 // mode).
 double participation_ratio(const Eigen::VectorXd& mode);
 
+// Decomposition of a mode u (Fig. 9.5c, d: "modes ... include particle translations, rotations, and
+// deformations"), particle by particle: u_i = t + omega z x (r_i - c) + d_i with c the vertex mean,
+// t = mean of u_i (rigid translation), omega = sum (r_i - c) x u_i / sum |r_i - c|^2 (rigid rotation, the
+// least-squares fit) and d_i the rest (deformation). The three parts are orthogonal; returned are their
+// shares of |u|^2 summed over the particles (they add up to 1). One-vertex particles have no rotation part.
+struct ModeParts
+{
+    double translation = 0, rotation = 0, deformation = 0;
+};
+ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode);
+
+// Quartic mode (sec. 9.4.3, Fig. 9.14c): along the unit eigenvector e with eigenvalue lambda [E/L^2],
+// Delta U(dr) = U(x + dr e) - U(x) exceeds the harmonic lambda dr^2 / 2 by more than `factor` (decision
+// dpm-quartic-criterion). Quadratic modes stay at the harmonic value until the contacts change.
+bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
+                     double lambda, double dr, double factor);
+
 // FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);
 

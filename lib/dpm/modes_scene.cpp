@@ -33,6 +33,81 @@ nlohmann::json median_or_null(std::vector<double> values)
     return values[values.size() / 2];
 }
 
+// Fig. 9.5(c, d): every non-zero mode of a packing of deformable particles split into rigid translations,
+// rotations and deformations (decompose_mode), classified quartic or quadratic by Delta U (is_quartic_mode);
+// the lowest-frequency quartic mode and the highest-frequency mode are written as fields over the packing.
+void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double unit, int zero,
+                      RunContext& context)
+{
+    const ModeSpectrum modes = vibrational_modes(system, x);
+    const double mixing = 0.05; // each part carries >= 5 % of |u|^2 (decision dpm-quartic-criterion)
+    auto& table = context.table("mode_parts.dat",
+                                {{"k", "1", "mode index, ascending eigenvalue"},
+                                 {"lambda", "k_a a0", "eigenvalue lambda~_k, eq. (9.28)"},
+                                 {"quartic", "1", "1 if Delta U(0.1 sigma) > 3 lambda dr^2/2 (Fig. 9.14c)"},
+                                 {"translation", "1", "share of |u|^2 in rigid particle translations"},
+                                 {"rotation", "1", "share of |u|^2 in rigid particle rotations"},
+                                 {"deformation", "1", "share of |u|^2 in particle deformations"},
+                                 {"participation_ratio", "1", "(sum |u_i|^2)^2 / (N sum |u_i|^4)"}});
+    int quartic_count = 0, quartic_mixing = 0, quadratic_count = 0, quadratic_mixing = 0;
+    Eigen::Index quartic_lowest = -1;
+    for (Eigen::Index m = zero; m < modes.eigenvalues.size(); ++m) {
+        const Eigen::VectorXd u = modes.eigenvectors.col(m);
+        const ModeParts parts = decompose_mode(system, x, u);
+        const bool quartic = is_quartic_mode(system, x, u, modes.eigenvalues(m), 0.1, 3.0);
+        const bool mixes =
+            parts.translation >= mixing && parts.rotation >= mixing && parts.deformation >= mixing;
+        (quartic ? quartic_count : quadratic_count) += 1;
+        (quartic ? quartic_mixing : quadratic_mixing) += mixes ? 1 : 0;
+        if (quartic && quartic_lowest < 0) quartic_lowest = m;
+        table.row({double(m + 1), modes.eigenvalues(m) / unit, quartic ? 1.0 : 0.0, parts.translation,
+                   parts.rotation, parts.deformation, participation_ratio(u)});
+    }
+    auto& s = context.summary();
+    s["quartic_modes"] = quartic_count;
+    s["quartic_modes_mixing_fraction"] =
+        quartic_count > 0 ? nlohmann::json(double(quartic_mixing) / quartic_count) : nlohmann::json(nullptr);
+    s["quadratic_modes_mixing_fraction"] = quadratic_count > 0
+                                               ? nlohmann::json(double(quadratic_mixing) / quadratic_count)
+                                               : nlohmann::json(nullptr);
+    auto& field =
+        context.table("mode_fields.dat",
+                      {{"panel", "1", "0 the lowest quartic mode (Fig. 9.5c), 1 the highest mode (9.5d)"},
+                       {"particle", "1", "index"},
+                       {"x", "sqrt(a0)", "vertex, particle shifted so its centre is in the box"},
+                       {"y", "sqrt(a0)", "vertex"},
+                       {"ux", "1", "mode component (unit norm over the packing)"},
+                       {"uy", "1", "mode component"},
+                       {"closing", "1", "1: the first vertex repeated to close the outline"}});
+    const auto write_field = [&](int panel, Eigen::Index m, const std::string& prefix) {
+        const Eigen::VectorXd u = modes.eigenvectors.col(m);
+        const ModeParts parts = decompose_mode(system, x, u);
+        s[prefix + "_mode_index"] = m + 1;
+        s[prefix + "_lambda"] = modes.eigenvalues(m) / unit;
+        s[prefix + "_translation"] = parts.translation;
+        s[prefix + "_rotation"] = parts.rotation;
+        s[prefix + "_deformation"] = parts.deformation;
+        s[prefix + "_participation_ratio"] = participation_ratio(u);
+        for (std::size_t q = 0; q < system.particles.size(); ++q) {
+            const Particle& p = system.particles[q];
+            const Eigen::Map<const Eigen::Matrix2Xd> r(x.data() + 2 * p.first, 2, p.count);
+            const Eigen::Vector2d c = r.rowwise().mean();
+            const Eigen::Vector2d shift = wrap_into_box(c, *system.box) - c;
+            for (int i = 0; i <= p.count; ++i) {
+                const int v = p.first + i % p.count;
+                field.row({double(panel), double(q), x(2 * v) + shift.x(), x(2 * v + 1) + shift.y(), u(2 * v),
+                           u(2 * v + 1), i == p.count ? 1.0 : 0.0});
+            }
+        }
+    };
+    for (const char* prefix : {"quartic", "quadratic"})
+        for (const char* part :
+             {"_mode_index", "_lambda", "_translation", "_rotation", "_deformation", "_participation_ratio"})
+            s[std::string(prefix) + part] = nullptr;
+    if (quartic_lowest >= 0) write_field(0, quartic_lowest, "quartic");
+    if (zero < modes.eigenvalues.size()) write_field(1, modes.eigenvalues.size() - 1, "quadratic");
+}
+
 } // namespace
 
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
@@ -118,6 +193,7 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     const double jam_seconds = seconds_since(started);
     context.count_steps(r.fire_iterations);
     const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
+    if (o.model != "smooth_disk") write_mode_parts(r.system, r.x, r.pressure_unit, zero, context);
     // Rattlers: particles without any contact; each carries 3 zero modes (2 translations, 1 rotation).
     Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
     total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);

@@ -36,13 +36,16 @@ void write_outlines(Table& table, const DpmSystem& system, const Eigen::VectorXd
 }
 
 // Frames 1..n of Figs. 9.8(a-c), 9.9(a, c): the relaxed configurations nearest to n positions evenly spaced
-// from the first to the last contact.
+// from the first to the last contact (frame_range = contact) or over the whole scan (frame_range = scan, for
+// particles that may not touch; decision dpm-shear-frames).
 void write_frames(const Parameters& p, const ShearTestResult& r, RunContext& context)
 {
     const int frames = static_cast<int>(p.integer("frames"));
-    if (frames == 0 || r.samples.empty()) return;
+    const bool over_contact = p.choice("frame_range") == "contact";
+    if (frames == 0 || (over_contact ? r.samples.empty() : r.configurations.empty())) return;
     auto& table = context.table("frames.dat", outline_columns());
-    const double first = r.samples.front().x_over_d, last = r.samples.back().x_over_d;
+    const double first = over_contact ? r.samples.front().x_over_d : r.configurations.front().first;
+    const double last = over_contact ? r.samples.back().x_over_d : r.configurations.back().first;
     for (int k = 0; k < frames; ++k) {
         const double wanted = frames == 1 ? first : first + (last - first) * k / (frames - 1);
         const auto nearest = std::min_element(
@@ -144,7 +147,11 @@ std::vector<ParameterSpec> shear_friction_parameters()
         ParameterSpec::real("x_start", -0.7, "D_beta", "first x_bm / D_beta"),
         ParameterSpec::real("x_end", 0.7, "D_beta", "last x_bm / D_beta"),
         ParameterSpec::integer("seed", 1, "1", "noise seed for floppy particles (kb = 0)").non_negative(),
-        ParameterSpec::integer("frames", 7, "1", "snapshots over the contact range written to frames.dat")
+        ParameterSpec::choice(
+            "frame_range", "contact", {"contact", "scan"},
+            "frames evenly spaced from the first to the last contact, or over the whole scan "
+            "x_start..x_end (for particles that may not touch)"),
+        ParameterSpec::integer("frames", 7, "1", "snapshots over frame_range written to frames.dat")
             .non_negative(),
         ParameterSpec::boolean("frozen_scan", false,
                                "Appendix A (Fig. 9.19e): mu_eff with the shapes of the maximum frozen, mu "

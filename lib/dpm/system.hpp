@@ -46,6 +46,11 @@ struct DpmSystem
     // Lees-Edwards shear strain gamma of the box (section 9.4.3): the image above is shifted by gamma L_y in
     // x.
     double lees_edwards_strain = 0;
+    // Candidate particle pairs of the interaction from a cell list over the particle centres (O(N), cells of
+    // the largest pair reach) instead of all N(N-1)/2 pairs. Both visit the same pairs in the same order, so
+    // energies, forces and Hessians are bit-identical. Not used under Lees-Edwards strain (the cell list's
+    // images are those of the plain periodic box): all pairs are visited then.
+    bool cell_list = false;
 
     int vertex_count() const
     {
@@ -73,6 +78,12 @@ double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::Ve
 inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vector2d& L)
 {
     return d - (L.array() * (d.array() / L.array()).round()).matrix();
+}
+
+// The periodic image of a point in the box [0, L_x) x [0, L_y) (for drawing packings).
+inline Eigen::Vector2d wrap_into_box(const Eigen::Vector2d& p, const Eigen::Vector2d& L)
+{
+    return p - (L.array() * (p.array() / L.array()).floor()).matrix();
 }
 
 // Minimum image under Lees-Edwards boundaries with shear strain gamma: the row of images n_y boxes up is

@@ -1,0 +1,115 @@
+#include "dpm/rearrangement.hpp"
+
+#include "core/errors.hpp"
+#include "dpm/modes.hpp"
+#include "dpm/stress.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace softgrain::dpm {
+
+ContactNetwork disk_contacts(const DpmSystem& system, const Eigen::VectorXd& x, double min_overlap)
+{
+    const int n = static_cast<int>(system.particles.size());
+    for (const Particle& p : system.particles)
+        if (p.count != 1)
+            throw InputError("disk_contacts: a particle has " + std::to_string(p.count) +
+                             " vertices; only disks (one vertex) are allowed");
+    ContactNetwork contacts;
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j) {
+            const double sigma = 0.5 * (system.particles[i].sigma + system.particles[j].sigma);
+            const double r = system.image(x.segment<2>(2 * j) - x.segment<2>(2 * i)).norm();
+            if (sigma - r > min_overlap) contacts.insert({i, j});
+        }
+    return contacts;
+}
+
+NetworkChange compare_networks(const ContactNetwork& before, const ContactNetwork& after, int particles)
+{
+    NetworkChange change;
+    change.changed.assign(particles, false);
+    const auto mark = [&](const ContactPair& c) {
+        change.changed[c.first] = change.changed[c.second] = true;
+    };
+    for (const ContactPair& c : before)
+        if (!after.contains(c)) {
+            change.only_before.push_back(c);
+            mark(c);
+        }
+    for (const ContactPair& c : after)
+        if (!before.contains(c)) {
+            change.only_after.push_back(c);
+            mark(c);
+        }
+    for (bool b : change.changed)
+        change.particles_changed += b ? 1 : 0;
+    return change;
+}
+
+RearrangementResult find_rearrangement(const RearrangementOptions& o)
+{
+    if (o.jam.model != "smooth_disk")
+        throw InputError("model = " + o.jam.model + ": the rearrangement search is for smooth_disk packings");
+    JamOptions onset_only = o.jam;
+    onset_only.pressures = 0; // stop at the onset P_t
+    JamResult jammed = jam(onset_only);
+    RearrangementResult out;
+    out.system = jammed.system;
+    out.fire_iterations = jammed.fire_iterations;
+    out.fire = jammed.fire;
+    DpmSystem& s = out.system;
+    // A contact force must exceed the FIRE residual by a decade to count (decision
+    // dpm-rearrangement-contact).
+    out.min_overlap = o.min_overlap > 0 ? o.min_overlap : 10 * jammed.fire.force_tolerance / s.kc;
+
+    const auto relax = [&](Eigen::VectorXd& x, int step) {
+        const FireResult r = relax_fire(s, x, jammed.fire);
+        out.fire_iterations += r.iterations;
+        if (!r.converged)
+            throw NumericalError(
+                "FIRE relaxation after a compression step of Delta phi = " + std::to_string(o.dphi) +
+                    " (force rms " + std::to_string(r.force_rms) + ")",
+                step, "force tolerance too small for the pressure; raise pressure_onset");
+    };
+    const auto state_of = [&](const Eigen::VectorXd& x) {
+        return PackingState{packing_fraction(s, x), pressure(stress_tensor(s, x)) / jammed.pressure_unit, x,
+                            *s.box, disk_contacts(s, x, out.min_overlap)};
+    };
+    // Moves the system to the packing fraction phi + dphi (box area scales as 1/phi).
+    const auto compress_by = [&](Eigen::VectorXd& x, double phi, double dphi) {
+        scale_packing(s, x, std::sqrt(phi / (phi + dphi)));
+    };
+
+    PackingState current = state_of(jammed.states.front().x);
+    out.phi_c = current.phi;
+    out.previous = current;
+    for (int step = 1; step <= o.max_steps; ++step) {
+        Eigen::VectorXd x = current.x;
+        compress_by(x, current.phi, o.dphi);
+        relax(x, step);
+        PackingState next = state_of(x);
+        if (next.contacts != current.contacts) {
+            Eigen::VectorXd back = x;
+            compress_by(back, next.phi, current.phi - next.phi);
+            relax(back, step);
+            PackingState reversed = state_of(back);
+            *s.box = next.box;
+            if (reversed.contacts != current.contacts) {
+                out.found = true;
+                out.step = step;
+                out.before = current;
+                out.after = next;
+                out.reversed = reversed;
+                return out;
+            }
+            ++out.elastic_changes;
+        }
+        out.previous = current;
+        current = std::move(next);
+    }
+    return out;
+}
+
+} // namespace softgrain::dpm
