@@ -167,8 +167,10 @@ class ShellModel
     double neighbour_skin() const { return neighbours_ ? neighbours_->skin() : 0.0; }
 
   private:
-    int next(const Shell& s, int local) const { return s.first + (local + 1) % s.count; }
-    int prev(const Shell& s, int local) const { return s.first + (local + s.count - 1) % s.count; }
+    // Neighbours along a closed shell (local index wrapped without an integer division: these run for every
+    // vertex of every step).
+    int next(const Shell& s, int local) const { return s.first + (local + 1 == s.count ? 0 : local + 1); }
+    int prev(const Shell& s, int local) const { return s.first + (local == 0 ? s.count - 1 : local - 1); }
     void internal_forces(const Shell& s);
     double shell_stretch_energy(const Shell& s) const;
     double shell_bending_energy(const Shell& s) const;
