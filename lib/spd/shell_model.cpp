@@ -201,14 +201,14 @@ void ShellModel::update_contact_candidates()
     ++list_builds_;
 
     std::vector<Candidate> fresh;
+    const auto add = [&](int i, int a, int b) {
+        fresh.push_back({i, a, b, shells_[shell_of(i)].radius + shells_[shell_of(a)].radius});
+    };
     const auto add_adjacent_elements = [&](int i, int j) { // elements of shell_of(j) that end at j
         const Shell& s = shells_[shell_of(j)];
         const int local = j - s.first;
-        if (local < s.elements()) fresh.push_back({i, j, next(s, local)});
-        if (s.closed || local > 0) {
-            const int before = prev(s, local);
-            fresh.push_back({i, before, j});
-        }
+        if (local < s.elements()) add(i, j, next(s, local));
+        if (s.closed || local > 0) add(i, prev(s, local), j);
     };
     for (const auto& [i, j] : neighbours_->pairs()) {
         const Shell &si = shells_[shell_of(i)], &sj = shells_[shell_of(j)];
@@ -227,7 +227,7 @@ void ShellModel::update_contact_candidates()
                     for (int k = 0; k < wall.elements(); ++k) {
                         const int a = wall.first + k, b = next(wall, k);
                         if (point_segment_proximity(vertex(i), vertex(a), vertex(b)).distance < wall_reach)
-                            fresh.push_back({i, a, b});
+                            add(i, a, b);
                     }
     }
     const auto key = [](const Candidate& c) { return std::make_pair(c.vertex, c.a); };
@@ -252,23 +252,27 @@ void ShellModel::update_contact_candidates()
     contact_groups_.push_back(candidates_.size());
 }
 
+// The cheap rejection before the exact distance: the vertex lies outside the bounding box of the
+// sphero-segment (the case of nearly all candidates at a step).
+inline bool ShellModel::outside_bounding_box(const Candidate& cand) const
+{
+    const double reach = cand.reach;
+    const Vec2 c = vertex(cand.vertex), A = vertex(cand.a), B = vertex(cand.b);
+    return c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
+           c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach;
+}
+
 // Section 2.3: one vertex against one element of another shell (a sphero-segment), written into the
 // candidate's record. A contact with an element end (branches a < 0, a > l of Fig. 4) is a vertex-vertex
 // contact; it is counted once, with the element that starts at that end (or, for the last vertex of an open
-// shell, that ends there).
-void ShellModel::evaluate_contact(Candidate& cand, double dt) const
+// shell, that ends there). Called for a candidate inside the bounding box, its record reset; old_friction is
+// its tangential force of the previous step.
+void ShellModel::evaluate_contact(Candidate& cand, double old_friction, double dt) const
 {
-    cand.active = cand.overlap = false;
     const int i = cand.vertex, a = cand.a, b = cand.b;
-    const Shell &sp = shells_[shell_of(i)], &sq = shells_[shell_of(a)];
-    const double reach = sp.radius + sq.radius;
+    const Shell& sq = shells_[shell_of(a)];
+    const double reach = cand.reach;
     const Vec2 c = vertex(i), A = vertex(a), B = vertex(b);
-    const double old_friction = cand.friction;
-    cand.friction = 0; // a contact that opened loses its history
-    // Bounding box of the sphero-segment: a cheap rejection before the exact distance.
-    if (c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
-        c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach)
-        return;
     const SegmentProximity prox = point_segment_proximity(c, A, B);
     if (prox.distance >= reach) return;
     // The sphero-segment law holds while the vertex centre stays on its side of the element: at distance
@@ -309,10 +313,13 @@ void ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, doub
 {
     std::size_t nearest = end;
     for (std::size_t k = begin; k < end; ++k) {
-        evaluate_contact(candidates_[k], dt);
-        if (candidates_[k].active &&
-            (nearest == end || candidates_[k].distance < candidates_[nearest].distance))
-            nearest = k;
+        Candidate& cand = candidates_[k];
+        const double old_friction = cand.friction;
+        cand.friction = 0; // a contact that opened loses its history
+        cand.active = cand.overlap = false;
+        if (outside_bounding_box(cand)) continue;
+        evaluate_contact(cand, old_friction, dt);
+        if (cand.active && (nearest == end || cand.distance < candidates_[nearest].distance)) nearest = k;
     }
     for (std::size_t k = begin; k < end; ++k)
         if (k != nearest && candidates_[k].active) {
@@ -704,6 +711,7 @@ void ShellModel::Candidate::transfer(Archive& archive)
     archive(vertex);
     archive(a);
     archive(b);
+    archive(reach);
     archive(friction);
     archive(active);
     archive(overlap);

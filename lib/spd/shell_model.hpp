@@ -204,6 +204,7 @@ class ShellModel
     struct Candidate
     {
         int vertex, a, b;
+        double reach = 0; // r_i + r_j of the vertex and the element [m]
         double friction = 0;
         bool active = false, overlap = false; // in contact; overlap beyond 95% of r_i + r_j (exit 3)
         double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
@@ -217,7 +218,8 @@ class ShellModel
     std::optional<NeighbourList<2>> neighbours_;
     double list_length_ = 0; // element length bound L of the list's cutoff [m]
     int list_builds_ = 0;
-    void evaluate_contact(Candidate& candidate, double dt) const;
+    bool outside_bounding_box(const Candidate& candidate) const;
+    void evaluate_contact(Candidate& candidate, double old_friction, double dt) const;
     void evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
     void gather_contact_forces();
     void add_link_forces();
