@@ -71,7 +71,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        dpm::shape3d_parameters(), dpm::run_shape3d});
     registry.add(Scene{"dpm.modes3d",
                        "DPM eq. (9.2), (9.28): eigenvalues of the dynamical matrix of a single 3D floppy / "
-                       "shell / surface-tension particle and its zero modes (Fig. 9.15a)",
+                       "shell / surface-tension particle and its zero modes (Fig. 9.15a), or of a jammed "
+                       "bidisperse packing of them (particles > 1, Fig. 9.15b)",
                        dpm::modes3d_parameters(), dpm::run_modes3d});
     registry.add(Scene{"dpm.shear_modulus",
                        "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "

@@ -39,20 +39,27 @@ Scalar signed_edge_distance(const Eigen::Matrix<Scalar, 6, 1>& x)
     return Scalar((bax * bpy - bay * bpx) / sqrt(bax * bax + bay * bay));
 }
 
-// Spring between two vertices, k/2 (sigma - r)^2 (eqs. 9.4, 9.8 with k < 0, 9.9); x = (r_1, r_2).
-// The caller applies the Heaviside factors.
-struct VertexSpringEnergy
+// Spring between two vertices in Dim dimensions, k/2 (sigma - r)^2 (eqs. 9.4, 9.8 with k < 0, 9.9);
+// x = (r_1, r_2), r = |r_2 - r_1|. The caller applies the Heaviside factors. In 3D the vertices are spheres
+// of diameter sigma (the rough interaction of section 9.3.2 carried over to 3D, system3d.hpp).
+template <int Dim>
+struct VertexSpring
 {
     double k, sigma;
     template <class Scalar>
-    Scalar operator()(const Eigen::Matrix<Scalar, 4, 1>& x) const
+    Scalar operator()(const Eigen::Matrix<Scalar, 2 * Dim, 1>& x) const
     {
         using std::sqrt;
-        const Scalar dx = x(2) - x(0), dy = x(3) - x(1);
-        const Scalar overlap = Scalar(sigma) - Scalar(sqrt(dx * dx + dy * dy));
+        Scalar r2 = Scalar(0);
+        for (int d = 0; d < Dim; ++d) {
+            const Scalar delta = x(Dim + d) - x(d);
+            r2 += delta * delta;
+        }
+        const Scalar overlap = Scalar(sigma) - Scalar(sqrt(r2));
         return Scalar(0.5 * k) * overlap * overlap;
     }
 };
+using VertexSpringEnergy = VertexSpring<2>;
 
 // Vertex-edge spring k/2 (sigma - d)^2 of eq. (9.6); x = (p, a, b). The caller applies the Heavisides.
 struct VertexEdgeEnergy

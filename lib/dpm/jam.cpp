@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
+#include "dpm/jam_schedule.hpp"
 #include "dpm/modes.hpp"
 #include "dpm/packing_fraction.hpp"
 #include "dpm/rigid.hpp"
@@ -123,35 +124,22 @@ JamResult jam(const JamOptions& o)
     for (int k = 1; k <= o.pressures; ++k)
         targets.push_back(o.pressure_onset *
                           std::pow(o.pressure_max / o.pressure_onset, double(k) / o.pressures));
-    const double largest_step = 5e-3; // Delta L/L (decision dpm-jam-protocol)
-    double step = largest_step;
-    long step_index = 0;
-    // Section 9.4: change the box by the step and relax until 1 <= P/P_target < 1.01. Compressing, a step
-    // that overshoots the window is undone and halved; decompressing, one that undershoots it. Far from a
-    // target the step grows again, never beyond the first (decision dpm-jam-protocol; below onset the
-    // pressure is FIRE round-off and says nothing, so compression towards onset never grows it).
+    BoxSchedule schedule; // Delta L/L = 5e-3 (decision dpm-jam-protocol)
+    schedule.onset = o.pressure_onset;
+    Eigen::VectorXd saved_x;
+    Eigen::Vector2d saved_box;
+    const CompressiblePacking packing{current_pressure, [&](double f) { scale_packing(s, out.x, f); },
+                                      [&](long step_index) { return relax(step_index); },
+                                      [&] {
+                                          saved_x = out.x;
+                                          saved_box = *s.box;
+                                      },
+                                      [&] {
+                                          out.x = saved_x;
+                                          *s.box = saved_box;
+                                      }};
     const auto reach = [&](double target, bool compressing) {
-        long iterations = 0;
-        for (;; ++step_index) {
-            const double p = current_pressure();
-            if (p >= target && p < 1.01 * target) break;
-            if (step < 1e-15)
-                throw NumericalError("box step below 1e-15 before 1 <= P/P_target < 1.01", step_index,
-                                     "a rearrangement makes the pressure jump over the window");
-            const Eigen::VectorXd saved_x = out.x;
-            const Eigen::Vector2d saved_box = *s.box;
-            scale_packing(s, out.x, compressing ? 1.0 - step : 1.0 + step);
-            iterations += relax(step_index);
-            const double after = current_pressure();
-            if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
-                out.x = saved_x;
-                *s.box = saved_box;
-                step *= 0.5;
-            } else if (compressing ? target > o.pressure_onset && after < 0.5 * target && after > 0
-                                   : after > 2 * target) {
-                step = std::min(2 * step, largest_step);
-            }
-        }
+        const long iterations = reach_pressure(target, compressing, schedule, packing);
         out.states.push_back(
             {packing_fraction(s, out.x), current_pressure(), iterations, out.x, *s.box, !compressing});
     };

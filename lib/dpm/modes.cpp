@@ -120,7 +120,7 @@ ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, cons
 bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                      double lambda, double dr, double factor)
 {
-    return energy_change_along(system, x, mode, dr) > factor * 0.5 * lambda * dr * dr;
+    return quartic_energy_change(energy_change_along(system, x, mode, dr), lambda, dr, factor);
 }
 
 } // namespace softgrain::dpm

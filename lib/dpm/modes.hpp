@@ -45,6 +45,11 @@ ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, cons
 // Quartic mode (sec. 9.4.3, Fig. 9.14c): along the unit eigenvector e with eigenvalue lambda [E/L^2],
 // Delta U(dr) = U(x + dr e) - U(x) exceeds the harmonic lambda dr^2 / 2 by more than `factor` (decision
 // dpm-quartic-criterion). Quadratic modes stay at the harmonic value until the contacts change.
+// The same criterion on a measured Delta U(dr) (any dimension): Delta U > factor lambda dr^2 / 2.
+inline bool quartic_energy_change(double delta_u, double lambda, double dr, double factor)
+{
+    return delta_u > factor * 0.5 * lambda * dr * dr;
+}
 bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                      double lambda, double dr, double factor);
 

@@ -1,14 +1,19 @@
 // dpm.shape3d: the closed triangulated meshes of section 9.3.1, their Euler counts and the shape
 // parameter A^3D = s^(3/2)/(6 sqrt(pi) v) of the undeformed mesh (the text's A_min^3D).
 // dpm.modes3d: eigenvalues of the dynamical matrix (eq. 9.28) of a single floppy, shell or
-// surface-tension particle in 3D (Fig. 9.15a).
+// surface-tension particle in 3D (Fig. 9.15a), or (particles > 1) of a jammed bidisperse packing of them at
+// pressure P_t (jam3d.hpp, Fig. 9.15b).
 #include "dpm/scenes3d.hpp"
 
+#include "core/errors.hpp"
 #include "core/output.hpp"
+#include "dpm/jam3d.hpp"
+#include "dpm/modes.hpp"
 #include "dpm/single_particle3d.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <numeric>
 #include <optional>
 
 namespace softgrain::dpm {
@@ -59,8 +64,103 @@ std::vector<ParameterSpec> shape3d_parameters()
                                   "(vertices projected to the unit sphere)")};
 }
 
+namespace {
+
+// Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns the number of zero modes.
+int write_spectrum(const Eigen::VectorXd& lambda, double threshold, RunContext& context)
+{
+    auto& spectrum =
+        context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
+                                          {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k of M, eq. (9.28)"},
+                                          {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
+    for (Eigen::Index i = 0; i < lambda.size(); ++i)
+        spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
+    const int zero = count_zero_modes(lambda, threshold);
+    auto& s = context.summary();
+    s["zero_modes"] = zero;
+    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
+    s["lambda_smallest_nonzero"] =
+        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
+    s["lambda_max"] = lambda(lambda.size() - 1);
+    return zero;
+}
+
+// Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
+// residual force f shifts the zero modes by ~f R).
+void run_packing_modes3d(const Parameters& p, RunContext& context)
+{
+    Jam3dOptions o;
+    o.model = shape_model_from_name(p.choice("model"));
+    o.particles = static_cast<int>(p.integer("particles"));
+    o.mesh = p.choice("mesh");
+    o.size_ratio = p.real("size_ratio");
+    o.pressure_onset = p.real("pressure");
+    if (o.model == ShapeModel::floppy) {
+        if (p.keyword("A0"))
+            throw InputError(
+                "parameter 'A0' = 'min' for floppy packings; allowed: a real number above the mesh's "
+                "own A^3D (floppy particles need A0 > A_min)");
+        o.A0_floppy = p.real("A0");
+    }
+    o.stiffness.ka = p.real("ka");
+    o.stiffness.kb = p.real("kb");
+    o.stiffness.gamma = p.real("gamma");
+    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    context.record_seed(o.seed);
+    Jam3dResult j = jam3d(o);
+    context.count_steps(j.fire_iterations);
+    const EnergyWithDerivatives energy = [&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                              Eigen::MatrixXd* h) {
+        return total_energy3d(j.system, y, g, h);
+    };
+    const double force_max = polish_newton(energy, j.x, 1e-14 * j.pressure_unit, 30);
+
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
+    total_energy3d(j.system, j.x, nullptr, &m);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+    const Eigen::VectorXd lambda = solver.eigenvalues() / j.eigenvalue_unit;
+    const double threshold = p.real("zero_threshold");
+    const int zero = write_spectrum(lambda, threshold, context);
+
+    // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
+    // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
+    const double dr = 0.1, u0 = total_energy3d(j.system, j.x, nullptr, nullptr);
+    int quartic = 0;
+    for (Eigen::Index k = zero; k < lambda.size(); ++k) {
+        const Eigen::VectorXd moved = j.x + dr * solver.eigenvectors().col(k);
+        quartic += quartic_energy_change(total_energy3d(j.system, moved, nullptr, nullptr) - u0,
+                                         solver.eigenvalues()(k), dr, 3.0);
+    }
+    // Rattlers: particles without a vertex contact; each keeps the zero modes of a free particle (6 rigid
+    // motions; a floppy one N + 3, Fig. 9.15a).
+    const std::vector<int> contacts = contact_counts3d(j.system, j.x);
+    const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
+    const int free_modes = o.model == ShapeModel::floppy ? j.system.meshes[0].vertex_count() + 3 : 6;
+    const double soft = p.real("soft_threshold");
+    auto& s = context.summary();
+    s["particles"] = o.particles;
+    s["modes"] = lambda.size();
+    s["rattlers"] = rattlers;
+    s["zero_modes_without_rattlers"] = zero - free_modes * rattlers;
+    s["quartic_modes"] = quartic;
+    s["soft_modes"] =
+        static_cast<int>((lambda.array() >= p.real("zero_threshold") && lambda.array() < soft).count());
+    s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;
+    s["phi"] = packing_fraction3d(j.system, j.x);
+    s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
+    s["box_steps"] = j.box_steps;
+    s["fire_iterations"] = j.fire_iterations;
+    s["force_max"] = force_max / j.pressure_unit;
+}
+
+} // namespace
+
 void run_modes3d(const Parameters& p, RunContext& context)
 {
+    if (p.integer("particles") > 1) {
+        run_packing_modes3d(p, context);
+        return;
+    }
     const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
     Stiffness3d k;
     k.ka = p.real("ka");
@@ -77,23 +177,11 @@ void run_modes3d(const Parameters& p, RunContext& context)
     shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &m);
     const Eigen::VectorXd lambda =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
-    const double threshold = p.real("zero_threshold");
-    const auto zero = static_cast<int>((lambda.array() < threshold).count());
-    auto& spectrum =
-        context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
-                                          {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k of M, eq. (9.28)"},
-                                          {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
-    for (Eigen::Index i = 0; i < lambda.size(); ++i)
-        spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
+    const int zero = write_spectrum(lambda, p.real("zero_threshold"), context);
 
     const Eigen::VectorXd& x = particle.x;
     auto& s = context.summary();
-    s["zero_modes"] = zero;
     s["zero_modes_nontrivial"] = zero - 6;
-    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
-    s["lambda_smallest_nonzero"] =
-        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
-    s["lambda_max"] = lambda(lambda.size() - 1);
     s["vertices"] = particle.mesh.vertex_count();
     s["A_mesh"] = particle.A_mesh;
     s["A0_used"] = particle.A0;
@@ -122,7 +210,24 @@ std::vector<ParameterSpec> modes3d_parameters()
         ParameterSpec::real("zero_threshold", 1e-10, "k_v v0^(4/3)",
                             "zero mode: lambda~ below this (Fig. 9.15a)")
             .positive(),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random displacement of the start").non_negative(),
+        ParameterSpec::integer(
+            "seed", 1, "1",
+            "seed of the random displacement of the start (single particle) or of the random "
+            "positions and orientations (packing)")
+            .non_negative(),
+        ParameterSpec::integer(
+            "particles", 1, "1",
+            "1: a single particle (Fig. 9.15a); an even number >= 2: a jammed 50:50 bidisperse "
+            "packing of that many particles in a periodic cube (Fig. 9.15b)")
+            .at_least(1),
+        ParameterSpec::real("pressure", 1e-7, "k_v v0", "packing: jamming pressure P_t (1 <= P/P_t < 1.01)")
+            .positive(),
+        ParameterSpec::real("size_ratio", 1.4, "1", "packing: diameter ratio of large to small particles")
+            .at_least(1.0),
+        ParameterSpec::real(
+            "soft_threshold", 1e-4, "k_v v0^(4/3)",
+            "packing: a non-zero mode below this counts as soft (low-frequency), summary soft_modes")
+            .positive(),
     };
 }
 

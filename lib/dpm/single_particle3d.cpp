@@ -9,6 +9,19 @@
 
 namespace softgrain::dpm {
 
+ShapeParameters3d model_shape3d(ShapeModel model, const TriangleMesh& mesh, const Eigen::VectorXd& x,
+                                double A0, double kv, const Stiffness3d& k)
+{
+    const double A_mesh = shape_parameter3d(mesh_surface_area(mesh, x, 0), mesh_volume(mesh, x, 0));
+    if (A0 < A_mesh)
+        throw InputError("parameter 'A0' = '" + std::to_string(A0) +
+                         "' is below the mesh's own shape parameter " + std::to_string(A_mesh) +
+                         "; allowed: min (the mesh's own) or a real number >= it");
+    const double scale = std::pow(A0 / A_mesh, 2.0 / 3.0);
+    const bool shell = model == ShapeModel::shell, tension = model == ShapeModel::surface_tension;
+    return rest_shape_from_mesh(mesh, x, kv, k.ka, shell ? k.kb : 0.0, tension ? k.gamma : 0.0, scale);
+}
+
 SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleMesh& mesh,
                                                std::optional<double> A0, const Stiffness3d& k,
                                                std::uint64_t seed)
@@ -21,14 +34,7 @@ SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleM
     const Eigen::VectorXd reference = mesh_coordinates(p.mesh);
     p.A_mesh = shape_parameter3d(mesh_surface_area(p.mesh, reference, 0), mesh_volume(p.mesh, reference, 0));
     p.A0 = A0.value_or(p.A_mesh);
-    if (p.A0 < p.A_mesh)
-        throw InputError("parameter 'A0' = '" + std::to_string(p.A0) +
-                         "' is below the mesh's own shape parameter " + std::to_string(p.A_mesh) +
-                         "; allowed: min (the mesh's own) or a real number >= it");
-    const double scale = std::pow(p.A0 / p.A_mesh, 2.0 / 3.0);
-    const bool shell = model == ShapeModel::shell, tension = model == ShapeModel::surface_tension;
-    p.shape = rest_shape_from_mesh(p.mesh, reference, 1.0, k.ka, shell ? k.kb : 0.0, tension ? k.gamma : 0.0,
-                                   scale);
+    p.shape = model_shape3d(model, p.mesh, reference, p.A0, 1.0, k);
 
     Rng rng(seed);
     double edge = 0;

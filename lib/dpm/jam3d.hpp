@@ -1,0 +1,57 @@
+// Jamming of a small bidisperse packing of 3D deformable particles in a periodic cubic box, DPM section 9.4
+// (protocol P-DPM-JAM in 3D, for the packings of Fig. 9.15b): particles placed at random without overlap;
+// isotropic compression (particle centres scaled, shapes kept) in steps Delta L/L, FIRE after each, undo
+// and halve on overshoot, until 1 <= P/P_t < 1.01 (jam_schedule.hpp); P = Tr(Sigma)/3 of the 3D virial
+// stress (system3d.hpp, the analogue of eq. 9.26).
+//
+// Particles: 50:50 bidisperse, both on the same geodesic mesh, the large ones scaled by size_ratio in
+// diameter; vertex diameter sigma = 1 and the small particles' mean edge 0.85 sigma (as the 2D polygons,
+// decision dpm-3d-jam-packing). Shape energy eq. (9.2) with Table 9.1's models in 3D (model_shape3d):
+// k_v v0^2 = k_c sigma^2 with v0 the small particles' volume (decision dpm-3d-jam-packing), k_a, k_b,
+// gamma given in units of k_v v0^(2/3), k_v v0^2, k_v v0^(5/3) as for single particles (Fig. 9.15a).
+// Pressure in k_v v0 (the paper's unit), eigenvalues in k_v v0^(4/3).
+#pragma once
+
+#include "core/fire.hpp"
+#include "dpm/single_particle3d.hpp"
+#include "dpm/system3d.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace softgrain::dpm {
+
+struct Jam3dOptions
+{
+    ShapeModel model = ShapeModel::shell;
+    int particles = 8;               // even: half small, half large
+    std::string mesh = "geodesic42"; // mesh3d.hpp's names
+    double size_ratio = 1.4;         // diameter ratio large/small
+    double pressure_onset = 1e-7;    // P_t [k_v v0]
+    double A0_floppy = 1.04;         // floppy particles' preferred shape parameter A0^3D
+    Stiffness3d stiffness;           // k_a, k_b, gamma (units above); k_v v0^2 = k_c sigma^2
+    double start_fraction = 0.4;     // sum_mu (2 R_mu + sigma)^3 / L^3 at the random start
+    std::uint64_t seed = 1;
+};
+
+struct Jam3dResult
+{
+    DpmSystem3d system;
+    Eigen::VectorXd x;          // the relaxed packing at P_t
+    double pressure_unit = 1;   // k_v v0 in k_c/sigma
+    double eigenvalue_unit = 1; // k_v v0^(4/3) in k_c
+    double energy_unit = 1;     // k_v v0^2 in k_c sigma^2
+    double length_unit = 1;     // v0^(1/3) in sigma
+    double phi = 0;             // packing_fraction3d
+    double pressure = 0;        // P [k_v v0]
+    long fire_iterations = 0;
+    long box_steps = 0;
+    FireOptions fire; // the protocol's FIRE settings
+};
+
+Jam3dResult jam3d(const Jam3dOptions& options);
+
+// FIRE (core) on the total energy of a 3D system.
+FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options);
+
+} // namespace softgrain::dpm

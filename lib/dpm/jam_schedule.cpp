@@ -1,0 +1,35 @@
+#include "dpm/jam_schedule.hpp"
+
+#include "core/errors.hpp"
+
+#include <algorithm>
+
+namespace softgrain::dpm {
+
+long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
+                    const CompressiblePacking& packing)
+{
+    long iterations = 0;
+    double& step = schedule.step;
+    for (;; ++schedule.step_index) {
+        const double p = packing.pressure();
+        if (p >= target && p < 1.01 * target) break;
+        if (step < 1e-15)
+            throw NumericalError("box step below 1e-15 before 1 <= P/P_target < 1.01", schedule.step_index,
+                                 "a rearrangement makes the pressure jump over the window");
+        packing.save();
+        packing.scale(compressing ? 1.0 - step : 1.0 + step);
+        iterations += packing.relax(schedule.step_index);
+        const double after = packing.pressure();
+        if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
+            packing.restore();
+            step *= 0.5;
+        } else if (compressing ? target > schedule.onset && after < 0.5 * target && after > 0
+                               : after > 2 * target) {
+            step = std::min(2 * step, schedule.largest_step);
+        }
+    }
+    return iterations;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,36 @@
+// The compression schedule of the jamming protocol, DPM section 9.4 (P-DPM-JAM), independent of the
+// dimension and of the particle model: change the box by Delta L/L, relax (FIRE) and read the pressure;
+// compressing, a step that overshoots 1 <= P/P_target < 1.01 is undone and halved; decompressing, one that
+// undershoots it. Far from a target the step grows again, never beyond the first (decision
+// dpm-jam-protocol; below onset the pressure is FIRE round-off and says nothing, so compression towards
+// onset never grows it). Used by the 2D protocol (jam.hpp) and the 3D one (jam3d.hpp).
+#pragma once
+
+#include <functional>
+
+namespace softgrain::dpm {
+
+// The operations the schedule needs from a packing.
+struct CompressiblePacking
+{
+    std::function<double()> pressure;  // P in the unit of the targets
+    std::function<void(double)> scale; // box side and particle centres scaled by the factor f, shapes kept
+    std::function<long(long)> relax;   // FIRE from the current state (argument: step index); iterations
+    std::function<void()> save;        // remember the state (coordinates and box)
+    std::function<void()> restore;     // return to the state saved last
+};
+
+struct BoxSchedule
+{
+    double step = 5e-3;         // current Delta L/L
+    double largest_step = 5e-3; // the first step and the cap of its growth (decision dpm-jam-protocol)
+    double onset = 0;           // P_t: below it the step never grows
+    long step_index = 0;        // box changes so far (diagnostics)
+};
+
+// Changes the box until 1 <= P/target < 1.01; returns the FIRE iterations spent. NumericalError if the
+// step falls below 1e-15 (a rearrangement makes the pressure jump over the window).
+long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
+                    const CompressiblePacking& packing);
+
+} // namespace softgrain::dpm

@@ -1,0 +1,144 @@
+#include "dpm/system3d.hpp"
+
+#include "core/errors.hpp"
+#include "core/neighbour_list.hpp"
+#include "dpm/interactions.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace softgrain::dpm {
+
+Eigen::Vector3d DpmSystem3d::image(const Eigen::Vector3d& d) const
+{
+    return box ? Eigen::Vector3d(d - *box * (d / *box).array().round().matrix()) : d;
+}
+
+void DpmSystem3d::add_particle(int mesh, const Eigen::Matrix3Xd& v, double sigma,
+                               const ShapeParameters3d& shape, Eigen::VectorXd& x)
+{
+    if (mesh < 0 || mesh >= static_cast<int>(meshes.size()) || v.cols() != meshes[mesh].vertex_count())
+        throw std::logic_error("DpmSystem3d::add_particle: vertices do not match the mesh");
+    Particle3d p;
+    p.first = vertex_count();
+    p.mesh = mesh;
+    p.count = static_cast<int>(v.cols());
+    p.sigma = sigma;
+    p.shape = shape;
+    particles.push_back(p);
+    x.conservativeResize(3 * vertex_count());
+    x.segment(3 * p.first, 3 * p.count) = v.reshaped();
+}
+
+Eigen::Matrix3Xd DpmSystem3d::vertices(const Particle3d& p, const Eigen::VectorXd& x) const
+{
+    return x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count);
+}
+
+namespace {
+
+// Calls contact(i, j, sigma_mb, r_ij) for every vertex pair of different particles closer than sigma_mb
+// (r_ij = minimum image of r_j - r_i), in the order of a cell list over the vertices (cells >= max sigma).
+template <class Contact>
+void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Contact& contact)
+{
+    const int n = s.vertex_count();
+    if (s.particles.size() < 2 || s.kc == 0) return;
+    std::vector<int> owner(n);
+    double largest_sigma = 0;
+    for (std::size_t m = 0; m < s.particles.size(); ++m) {
+        const Particle3d& p = s.particles[m];
+        std::fill(owner.begin() + p.first, owner.begin() + p.first + p.count, static_cast<int>(m));
+        largest_sigma = std::max(largest_sigma, p.sigma);
+    }
+    // A vertex pair has one image within reach only if L > 2 sigma (decision dpm-3d-vertex-image).
+    if (s.box && *s.box <= 2 * largest_sigma)
+        throw NumericalError("periodic box side " + std::to_string(*s.box) +
+                                 " not above twice the vertex diameter " + std::to_string(largest_sigma),
+                             0,
+                             "the packing is compressed beyond the minimum-image range; lower the pressure");
+    std::optional<Vec<3>> periodic;
+    if (s.box) periodic = Vec<3>::Constant(*s.box);
+    NeighbourList<3> list(largest_sigma, 0.0, periodic);
+    list.update(x.reshaped(3, n));
+    for (const auto& [i, j] : list.pairs()) {
+        if (owner[i] == owner[j]) continue;
+        const double sigma = 0.5 * (s.particles[owner[i]].sigma + s.particles[owner[j]].sigma);
+        const Eigen::Vector3d rij = s.image(x.segment<3>(3 * j) - x.segment<3>(3 * i));
+        if (rij.squaredNorm() < sigma * sigma) contact(i, j, sigma, rij); // Theta(sigma_mb - r), eq. (9.4)
+    }
+}
+
+} // namespace
+
+double interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                            Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial)
+{
+    double energy = 0;
+    for_each_contact(s, x, [&](int i, int j, double sigma, const Eigen::Vector3d& rij) {
+        const std::array<int, 2> pair{i, j};
+        Eigen::Matrix<double, 6, 1> local;
+        local << x.segment<3>(3 * i), x.segment<3>(3 * i) + rij; // j at its image nearest to i
+        energy += add_local_term<3, 2>(VertexSpring<3>{s.kc, sigma}, pair, local, gradient, hessian, virial);
+    });
+    return energy;
+}
+
+std::vector<int> contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    std::vector<int> owner(s.vertex_count());
+    for (std::size_t m = 0; m < s.particles.size(); ++m)
+        std::fill(owner.begin() + s.particles[m].first,
+                  owner.begin() + s.particles[m].first + s.particles[m].count, static_cast<int>(m));
+    std::vector<int> counts(s.particles.size(), 0);
+    for_each_contact(s, x, [&](int i, int j, double, const Eigen::Vector3d&) {
+        ++counts[owner[i]];
+        ++counts[owner[j]];
+    });
+    return counts;
+}
+
+double total_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                      Eigen::MatrixXd* hessian)
+{
+    double energy = 0;
+    for (const Particle3d& p : s.particles)
+        energy += shape_energy3d(p.shape, s.meshes[p.mesh], x, p.first, gradient, hessian);
+    return energy + interaction_energy3d(s, x, gradient, hessian);
+}
+
+Eigen::Matrix3d stress_tensor3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    if (!s.box) throw InputError("stress tensor: the system has no periodic box");
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+    // Shape part: sum_i r_i F_i^T per particle at its unwrapped vertices (translation invariant).
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    for (const Particle3d& p : s.particles)
+        shape_energy3d(p.shape, s.meshes[p.mesh], x, p.first, &g, nullptr);
+    const int n = s.vertex_count();
+    moment -= x.reshaped(3, n) * g.reshaped(3, n).transpose();
+    interaction_energy3d(s, x, nullptr, nullptr, &moment);
+    return moment / std::pow(*s.box, 3);
+}
+
+void scale_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double f)
+{
+    if (!s.box) throw std::logic_error("scale_packing3d: the system has no periodic box");
+    for (const Particle3d& p : s.particles) {
+        auto v = x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count);
+        const Eigen::Vector3d centre = v.rowwise().mean();
+        v.colwise() += (f - 1.0) * centre;
+    }
+    *s.box *= f;
+}
+
+double packing_fraction3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    double volume = 0;
+    for (const Particle3d& p : s.particles)
+        volume += mesh_volume(s.meshes[p.mesh], x, p.first);
+    return volume / std::pow(*s.box, 3);
+}
+
+} // namespace softgrain::dpm
