@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "dpm/interactions.hpp"
+#include "dpm/scale_packing.hpp"
 
 #include <stdexcept>
 
@@ -87,13 +88,7 @@ void shear_packing(DpmSystem& system, Eigen::VectorXd& x, double dgamma)
 
 void scale_packing(DpmSystem& system, Eigen::VectorXd& x, double f)
 {
-    if (!system.box) throw std::logic_error("scale_packing: the system has no periodic box");
-    for (const Particle& p : system.particles) {
-        auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
-        const Eigen::Vector2d centre = v.rowwise().mean();
-        v.colwise() += (f - 1.0) * centre;
-    }
-    *system.box *= f;
+    scale_particle_centres<2>(system, x, f);
 }
 
 } // namespace softgrain::dpm

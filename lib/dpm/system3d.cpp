@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/neighbour_list.hpp"
 #include "dpm/interactions.hpp"
+#include "dpm/scale_packing.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -124,13 +125,7 @@ Eigen::Matrix3d stress_tensor3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
 
 void scale_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double f)
 {
-    if (!s.box) throw std::logic_error("scale_packing3d: the system has no periodic box");
-    for (const Particle3d& p : s.particles) {
-        auto v = x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count);
-        const Eigen::Vector3d centre = v.rowwise().mean();
-        v.colwise() += (f - 1.0) * centre;
-    }
-    *s.box *= f;
+    scale_particle_centres<3>(s, x, f);
 }
 
 double packing_fraction3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
