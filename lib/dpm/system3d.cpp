@@ -54,10 +54,10 @@ void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Cont
         std::fill(owner.begin() + p.first, owner.begin() + p.first + p.count, static_cast<int>(m));
         largest_sigma = std::max(largest_sigma, p.sigma);
     }
-    // Under a Lees-Edwards strain gamma the cell list runs on the sheared coordinates x - gamma y, whose
-    // images form the plain cubic lattice; a pair at distance r there is at least r / (1 + |gamma|) apart in
-    // space, so the reach grows by that factor. gamma and gamma - 1 give the same images (cube): the one
-    // in [-1/2, 1/2] is used.
+    // Under a Lees-Edwards strain gamma the cell list runs on the coordinates x - gamma y (the shear undone),
+    // whose images form the plain cubic lattice; a pair r apart in space is at most r (1 + |gamma|) apart
+    // there, so the reach grows by that factor. gamma and gamma - 1 give the same images (cube): the one in
+    // [-1/2, 1/2] is used (decision dpm-3d-lees-edwards).
     const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain),
                  reach = largest_sigma * (1 + std::abs(gamma));
     // A vertex pair has one image within reach only if L > 2 reach (decision dpm-3d-vertex-image).
