@@ -17,18 +17,6 @@
 
 namespace softgrain::spd {
 
-namespace {
-// Wraps an angle increment into (-pi, pi]: turning angles are measured with atan2.
-double wrapped(double angle)
-{
-    while (angle > std::numbers::pi)
-        angle -= 2 * std::numbers::pi;
-    while (angle <= -std::numbers::pi)
-        angle += 2 * std::numbers::pi;
-    return angle;
-}
-} // namespace
-
 int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_mass)
 {
     const int n0 = this->vertices();
@@ -52,18 +40,16 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
     length_prev_.resize(n0 + n, 0.0);
     edge_.resize(n0 + n, Vec2::Zero());
     edge_squared_.resize(n0 + n, 0.0);
+    edge_rotation_.resize(n0 + n, 0.0);
     axial_.resize(n0 + n, 0.0);
-    angle_prev_.resize(n0 + n, 0.0);
     torque_.resize(n0 + n, 0.0);
     contact_normal_.resize(n0 + n, 0.0);
     shell_of_.resize(n0 + n, static_cast<int>(shells_.size()));
     neighbours_.reset(); // the vertex set changed: a new contact list
-    for (int k = 0; k < shell.elements(); ++k)
-        length_prev_[n0 + k] = (vertex(next(shell, k)) - vertex(n0 + k)).norm();
-    for (int k = 0; k < n; ++k)
-        if (shell.has_hinge(k))
-            angle_prev_[n0 + k] =
-                turning_angle(vertex(prev(shell, k)), vertex(n0 + k), vertex(next(shell, k)));
+    for (int k = 0; k < shell.elements(); ++k) {
+        edge_[n0 + k] = vertex(next(shell, k)) - vertex(n0 + k);
+        length_prev_[n0 + k] = edge_[n0 + k].norm();
+    }
     shells_.push_back(shell);
     const double V = shell.closed ? shell.depth * area(static_cast<int>(shells_.size()) - 1) : 0.0;
     core_V_prev_.push_back(V);
@@ -107,7 +93,9 @@ double ShellModel::area(int shell) const
 }
 
 // SPD eqs. (1) and (3): incremental stretch force and hinge torque, applied as axial forces and as two
-// couples (eqs. (8)-(9)).
+// couples (eqs. (8)-(9)). The increment of the turning angle theta_k = angle(e_k) - angle(e_(k-1)) since the
+// last call is the difference of the rotations of its two elements, each measured from the element's
+// previous vector (no wrapping of theta across +-pi is needed).
 void ShellModel::internal_forces(const Shell& s)
 {
     // Raw views: kept in registers across the stores into f (members would be reloaded after each store).
@@ -118,11 +106,12 @@ void ShellModel::internal_forces(const Shell& s)
         f[2 * i + 1] += F.y();
     };
     Vec2* edge = edge_.data();
-    double* edge_squared = edge_squared_.data();
+    double *edge_squared = edge_squared_.data(), *edge_rotation = edge_rotation_.data();
     const ShellLaws laws = s.laws;
     for (int k = 0; k < s.elements(); ++k) {
         const int i = s.first + k, j = next(s, k);
         const Vec2 e(x[2 * j] - x[2 * i], x[2 * j + 1] - x[2 * i + 1]);
+        edge_rotation[i] = element_rotation(edge[i], e);
         edge[i] = e;
         edge_squared[i] = e.squaredNorm();
         const double l = std::sqrt(edge_squared[i]);
@@ -137,11 +126,9 @@ void ShellModel::internal_forces(const Shell& s)
     for (int k = 0; k < s.count; ++k) {
         if (!s.has_hinge(k)) continue;
         const int i = s.first + k, a = prev(s, k), b = next(s, k);
-        const double theta = edge_turning_angle(edge[a], edge[i]);
-        const double M =
-            elastoplastic_update(torque_[i], laws.k_b * wrapped(theta - angle_prev_[i]), laws.M_Y);
+        const double dtheta = edge_rotation[i] - edge_rotation[a];
+        const double M = elastoplastic_update(torque_[i], laws.k_b * dtheta, laws.M_Y);
         torque_[i] = M;
-        angle_prev_[i] = theta;
         const ThreeForces couples = edge_couples(edge[a], edge_squared[a], edge[i], edge_squared[i], M);
         add(a, couples.previous);
         add(i, couples.centre);
@@ -867,15 +854,16 @@ void ShellModel::transfer(Archive& archive)
     archive(shells_);
     for (Eigen::VectorXd* state : {&x_, &v_, &f_, &inverse_mass_, &applied_, &contact_force_})
         archive(*state);
-    for (std::vector<double>* history : {&length_prev_, &axial_, &angle_prev_, &torque_, &core_V_prev_,
-                                         &core_p_, &core_V0_, &contact_normal_})
+    archive(edge_);
+    for (std::vector<double>* history :
+         {&length_prev_, &axial_, &torque_, &core_V_prev_, &core_p_, &core_V0_, &contact_normal_})
         archive(*history);
     archive(shell_of_);
     archive(candidates_);
     if (archive.loading()) { // what follows from the state: the candidates' indexes, the scratch of forces
         index_candidates();
-        edge_.assign(vertices(), Vec2::Zero());
         edge_squared_.assign(vertices(), 0.0);
+        edge_rotation_.assign(vertices(), 0.0);
     }
     bool listed = neighbours_.has_value();
     archive(listed);

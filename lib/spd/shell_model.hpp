@@ -217,11 +217,12 @@ class ShellModel
     Eigen::VectorXd x_, v_, f_, inverse_mass_, applied_;
     Eigen::VectorXd contact_force_;           // per dof: contact force received [N]
     std::vector<double> length_prev_, axial_; // per element (indexed by its first vertex): l at last call, F
-    std::vector<double> angle_prev_, torque_; // per vertex: theta at last call, M
-    // Per element, scratch of internal_forces: the element vector x_(k+1) - x_k and its squared length, from
-    // the stretch law to the hinges (recomputed at every force evaluation, not state).
+    std::vector<double> torque_;              // per vertex: M
+    // Per element (indexed by its first vertex): the element vector x_(k+1) - x_k at the last call (state:
+    // the rotation since then gives the hinge increments); scratch of internal_forces: its squared length and
+    // the rotation of this call.
     std::vector<Vec2> edge_;
-    std::vector<double> edge_squared_;
+    std::vector<double> edge_squared_, edge_rotation_;
     std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
     std::vector<double> contact_normal_;                 // per vertex: normal contact force received [N]
     std::vector<int> shell_of_;                          // per vertex

@@ -1,5 +1,6 @@
-// SPD section 2 force laws as units: eqs. (1)-(3) hysteresis, eqs. (8)-(9) couples, Fig. 5 force transfer,
-// section 2.3 sphero-segment contact, eq. (7) Coulomb friction, eqs. (10)-(13) calibration round trip.
+// SPD section 2 force laws as units: eqs. (1)-(3) hysteresis, element rotations, eqs. (8)-(9) couples, Fig. 5
+// force transfer, section 2.3 sphero-segment contact, eq. (7) Coulomb friction, eqs. (10)-(13) calibration
+// round trip.
 #include "spd/force_laws.hpp"
 #include "core/geometry.hpp"
 #include "spd/calibration.hpp"
@@ -73,6 +74,30 @@ TEST_CASE("torque as two couples: zero net force and moment, each couple of mome
                            turning_angle(a - h * da, x - h * dx, b - h * db)) /
                           (2 * h);
     CHECK_CLOSE(f.previous.dot(da) + f.centre.dot(dx) + f.next.dot(db), -M * dtheta, (Tolerance{1e-8, 0}));
+}
+
+TEST_CASE(
+    "the rotation of an element in a step: the atan series agrees with atan2 to round-off [SPD eq. (3)]")
+{
+    // element_rotation uses t - t^3/3 + t^5/5 - t^7/7 (t = tan of the rotation) below |t| = 0.01; the first
+    // term left out is t^9/9 < 1.2e-17 |t| there, so the series and atan2 differ by round-off: a few ulps
+    // (4 eps relative). Angles from 1e-12 rad up to 0.05 rad cross the switch to atan2; elements of
+    // different lengths and orientations, both senses.
+    for (const double length : {1e-3, 1.0, 7.3})
+        for (const double direction : {0.0, 0.4, 2.9, -1.7})
+            for (double angle = 1e-12; angle < 0.05; angle *= 1.37)
+                for (const double sense : {1.0, -1.0}) {
+                    const double turn = sense * angle;
+                    const Vec2 before = length * Vec2(std::cos(direction), std::sin(direction));
+                    const Vec2 after =
+                        1.1 * length * Vec2(std::cos(direction + turn), std::sin(direction + turn));
+                    const double exact = std::atan2(cross2(before, after), before.dot(after));
+                    CHECK_CLOSE(element_rotation(before, after), exact, (Tolerance{4 * round_off, 0}));
+                    CHECK_CLOSE(element_rotation(before, after), turn, (Tolerance{1e-9, 1e-15}));
+                }
+    // Large rotations (atan2 itself), including a half turn.
+    CHECK_CLOSE(element_rotation(Vec2(1, 0), Vec2(-1, 1e-300)), std::numbers::pi, (Tolerance{round_off, 0}));
+    CHECK_CLOSE(element_rotation(Vec2(1, 0), Vec2(0, -2)), -std::numbers::pi / 2, (Tolerance{round_off, 0}));
 }
 
 TEST_CASE("force transfer to element ends conserves force and moment [SPD Fig. 5]")
