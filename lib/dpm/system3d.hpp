@@ -5,6 +5,7 @@
 //   U_int = sum_{mu < beta} sum_{i in mu, j in beta} k_c/2 (sigma_mb - r_ij)^2 Theta(sigma_mb - r_ij),
 //   sigma_mb = (sigma_mu + sigma_beta)/2,
 //
+// or, with interaction = smooth, through the vertex-face repulsion of sphero-polyhedra (interactions3d.hpp),
 // in open space or a periodic cubic box of side L. r_ij is the minimum-image distance of each vertex pair
 // (decision dpm-3d-vertex-image): exact for L > 2 max sigma, whatever the size of the particles.
 //
@@ -17,6 +18,7 @@
 
 #include "dpm/mesh3d.hpp"
 #include "dpm/shape_energy3d.hpp"
+#include "dpm/system.hpp"
 
 #include <optional>
 #include <vector>
@@ -38,6 +40,8 @@ struct DpmSystem3d
     std::vector<Particle3d> particles;
     double kc = 1.0;           // contact stiffness k_c [E/L^2]; 0 switches the interaction off
     std::optional<double> box; // side L of the periodic cubic box (corner at the origin); absent: open space
+    // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
+    InteractionKind interaction = InteractionKind::rough;
 
     int vertex_count() const
     {
@@ -52,9 +56,9 @@ struct DpmSystem3d
     Eigen::Matrix3Xd vertices(const Particle3d& p, const Eigen::VectorXd& x) const;
 };
 
-// Rough interaction energy (the formula above); adds its gradient and Hessian when given. `virial`, when
-// given, accumulates the force moment sum r_a F_b of every contact at its minimum-image coordinates (the
-// pair part of the 3D analogue of eq. 9.26).
+// Interaction energy (rough: the formula above; smooth: interactions3d.hpp); adds its gradient and
+// Hessian when given. `virial`, when given, accumulates the force moment sum r_a F_b of every contact at
+// its minimum-image coordinates (the pair part of the 3D analogue of eq. 9.26).
 double interaction_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                             Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial = nullptr);
 
@@ -80,7 +84,8 @@ void scale_packing3d(DpmSystem3d& system, Eigen::VectorXd& x, double f);
 // dpm-3d-jam-packing-fraction: the vertex spheres' caps outside the mesh are not counted).
 double packing_fraction3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
-// Number of vertex contacts (r_ij < sigma_mb) of each particle.
+// Number of vertex contacts (r_ij < sigma_mb) of each particle; smooth: vertex-surface contacts
+// (smooth_contact_counts3d).
 std::vector<int> contact_counts3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
 } // namespace softgrain::dpm
