@@ -7,7 +7,9 @@
 //     particles (concave edges), across a periodic boundary; forces and torques sum to zero;
 //   * the virial pressure equals -dU/dV under homogeneous dilation (as for rough contacts);
 //   * a particle pressed on a flat mesh: the vertex-against-surface energy is the same wherever the contact
-//     point lies on the mesh (face interior, edge, vertex), while rough contacts corrugate (closed forms).
+//     point lies on the mesh (face interior, edge, vertex), while rough contacts corrugate (closed forms);
+//     a vertex pushed through a face is a NumericalError.
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "dpm/interactions3d.hpp"
 #include "dpm/single_particle3d.hpp"
@@ -271,6 +273,11 @@ TEST_CASE(
         CHECK_CLOSE(smooth_vertex_surface_energy3d(s, 1, 0, x), expected,
                     (Tolerance{0, 100 * round_off * kc}));
     }
+    // Validity: a tip pushed 0.2 below the top face has passed through it (NumericalError, not a silent
+    // energy from the unsigned distance).
+    const Eigen::Vector3d below(0.3, 0.2, top - 0.2 + 2.0);
+    x.segment(3 * s.particles[1].first, 3 * ico.vertex_count()) = (probe.colwise() + below).reshaped();
+    CHECK_THROWS_AS(smooth_vertex_surface_energy3d(s, 1, 0, x), NumericalError);
     // Rough (eq. 9.4): over a vertex only that vertex is closer than sigma (the next at sqrt(h^2 + 1));
     // over the centre of a square its four corners are at sqrt(h^2 + 1/2) = 0.812.
     s.interaction = InteractionKind::rough;
