@@ -83,10 +83,11 @@ Eigen::Matrix<double, 3 * K, 1> gather_shifted(const Eigen::VectorXd& x, const s
 // the header with spring constant k. Calls `contact()` once if the vertex is within sigma of the surface.
 // Terms go to the global arrays when given.
 template <class OnContact>
-double vertex_surface(const DpmSystem3d& s, int i, int mu, const Particle3d& b, const Eigen::Vector3d& shift,
-                      double k, double sigma, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen::Vector3d& shift, double k,
+                      double sigma, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                       Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial, const OnContact& contact)
 {
+    const Particle3d& b = s.particles[beta];
     const TriangleMesh& mesh = s.meshes[b.mesh];
     const Eigen::Vector3d p = x.segment<3>(3 * i);
     const auto point = [&](int v) { return Eigen::Vector3d(x.segment<3>(3 * (b.first + v)) + shift); };
@@ -104,7 +105,7 @@ double vertex_surface(const DpmSystem3d& s, int i, int mu, const Particle3d& b, 
             (p - a).dot(n) < 0)
             throw NumericalError("smooth 3D contact: vertex " + std::to_string(i) + " of particle " +
                                      std::to_string(mu) + " has passed through face " + std::to_string(f) +
-                                     " of particle " + std::to_string(&b - s.particles.data()),
+                                     " of particle " + std::to_string(beta),
                                  0,
                                  "overlap beyond the model's range (the vertex must stay outside); "
                                  "smaller steps or a stiffer k_c");
@@ -161,8 +162,7 @@ double ordered_pair_energy(const DpmSystem3d& s, const std::vector<Sphere>& sphe
     const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5) on every ordered term (decision dpm-smooth-half)
     double energy = 0;
     for_each_vertex_near(s, spheres, mu, beta, x, [&](int i, const Eigen::Vector3d& shift, double sigma) {
-        energy +=
-            vertex_surface(s, i, mu, s.particles[beta], shift, k, sigma, x, gradient, hessian, virial, [] {});
+        energy += vertex_surface(s, i, mu, beta, shift, k, sigma, x, gradient, hessian, virial, [] {});
     });
     return energy;
 }
@@ -196,14 +196,13 @@ std::vector<int> smooth_contact_counts3d(const DpmSystem3d& s, const Eigen::Vect
     for (int mu = 0; mu < n; ++mu)
         for (int beta = 0; beta < n; ++beta) {
             if (mu == beta) continue;
-            for_each_vertex_near(s, spheres, mu, beta, x,
-                                 [&](int i, const Eigen::Vector3d& shift, double sigma) {
-                                     vertex_surface(s, i, mu, s.particles[beta], shift, 0.0, sigma, x,
-                                                    nullptr, nullptr, nullptr, [&] {
-                                                        ++counts[mu];
-                                                        ++counts[beta];
-                                                    });
-                                 });
+            for_each_vertex_near(
+                s, spheres, mu, beta, x, [&](int i, const Eigen::Vector3d& shift, double sigma) {
+                    vertex_surface(s, i, mu, beta, shift, 0.0, sigma, x, nullptr, nullptr, nullptr, [&] {
+                        ++counts[mu];
+                        ++counts[beta];
+                    });
+                });
         }
     return counts;
 }
