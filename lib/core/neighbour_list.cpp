@@ -15,23 +15,11 @@ NeighbourList<Dim>::NeighbourList(double cutoff, double skin, std::optional<Vec<
 }
 
 template <int Dim>
-Vec<Dim> NeighbourList<Dim>::separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const
-{
-    Vec<Dim> d = x_j - x_i;
-    if (box_)
-        for (int k = 0; k < Dim; ++k)
-            d[k] -= (*box_)[k] * std::round(d[k] / (*box_)[k]);
-    return d;
-}
-
-template <int Dim>
 bool NeighbourList<Dim>::needs_rebuild(const Points<Dim>& positions) const
 {
     if (builds_ == 0 || positions.cols() != reference_positions_.cols()) return true;
-    const double limit_squared = 0.25 * skin_ * skin_;
     for (Eigen::Index i = 0; i < positions.cols(); ++i)
-        if (separation(reference_positions_.col(i), positions.col(i)).squaredNorm() > limit_squared)
-            return true;
+        if (moved_beyond_half_skin(i, positions.col(i))) return true;
     return false;
 }
 

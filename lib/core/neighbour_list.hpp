@@ -8,6 +8,7 @@
 
 #include "core/vector.hpp"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -24,6 +25,15 @@ class NeighbourList
 
     // Rebuilds the list if needed; returns true if it did.
     bool update(const Points<Dim>& positions);
+    // Whether point i, now at x, makes the list stale: it has moved more than skin/2 since the last build
+    // (always true before the first build or for a point the list has not seen). `update` rebuilds exactly
+    // when this holds for some point; a caller that already visits every point can test it there, in
+    // parallel, and skip `update` otherwise.
+    bool moved_beyond_half_skin(Eigen::Index i, const Vec<Dim>& x) const
+    {
+        if (builds_ == 0 || i >= reference_positions_.cols()) return true;
+        return separation(reference_positions_.col(i), x).squaredNorm() > 0.25 * skin_ * skin_;
+    }
     const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
     int builds() const { return builds_; }
     double cutoff() const { return cutoff_; }
@@ -32,7 +42,14 @@ class NeighbourList
     long distance_evaluations() const { return distance_evaluations_; }
 
     // x_j - x_i, by the minimum image in a periodic box.
-    Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const;
+    Vec<Dim> separation(const Vec<Dim>& x_i, const Vec<Dim>& x_j) const
+    {
+        Vec<Dim> d = x_j - x_i;
+        if (box_)
+            for (int k = 0; k < Dim; ++k)
+                d[k] -= (*box_)[k] * std::round(d[k] / (*box_)[k]);
+        return d;
+    }
 
     // Writes or reads the whole list for a checkpoint (core/checkpoint.hpp): a resumed run rebuilds it at the
     // same steps as an uninterrupted one.

@@ -11,6 +11,7 @@
 #include "dpm/packing_scene.hpp"
 #include "dpm/rearrangement_scene.hpp"
 #include "dpm/scenes3d.hpp"
+#include "dpm/shear_modulus3d_scene.hpp"
 #include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
 #include "dpm/slide3d_scene.hpp"
@@ -79,6 +80,11 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
                        "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",
                        dpm::shear_modulus_parameters(), dpm::run_shear_modulus});
+    registry.add(Scene{"dpm.shear_modulus3d",
+                       "DPM sec. 9.4.3: shear modulus G of jammed 3D packings of floppy, shell and "
+                       "surface-tension particles from Lees-Edwards strain steps against pressure, fitted "
+                       "exponents of G ~ P^eta (Fig. 9.16b)",
+                       dpm::shear_modulus3d_parameters(), dpm::run_shear_modulus3d});
     registry.add(Scene{"dpm.slump",
                        "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
                        "right wall removed; run-out, angle of repose, layers at the front",

@@ -120,10 +120,7 @@ JamResult jam(const JamOptions& o)
     relax(0);
 
     // Targets: onset, then log-spaced pressures up to pressure_max.
-    std::vector<double> targets{o.pressure_onset};
-    for (int k = 1; k <= o.pressures; ++k)
-        targets.push_back(o.pressure_onset *
-                          std::pow(o.pressure_max / o.pressure_onset, double(k) / o.pressures));
+    const std::vector<double> targets = pressure_targets(o.pressure_onset, o.pressure_max, o.pressures);
     BoxSchedule schedule; // Delta L/L = 5e-3 (decision dpm-jam-protocol)
     schedule.onset = o.pressure_onset;
     Eigen::VectorXd saved_x;

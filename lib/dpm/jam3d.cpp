@@ -150,10 +150,16 @@ Jam3dResult jam3d(const Jam3dOptions& o)
                                           out.x = saved_x;
                                           *s.box = saved_box;
                                       }};
-    reach_pressure(o.pressure_onset, true, schedule, packing);
-    out.box_steps = schedule.step_index;
-    out.phi = packing_fraction3d(s, out.x);
-    out.pressure = current_pressure();
+    for (double target : pressure_targets(o.pressure_onset, o.pressure_max, o.pressures)) {
+        reach_pressure(target, true, schedule, packing);
+        out.states.push_back({packing_fraction3d(s, out.x), current_pressure(), out.x, *s.box});
+        if (out.states.size() == 1) out.box_steps = schedule.step_index;
+    }
+    const Jam3dState& onset = out.states.front();
+    out.x = onset.x;
+    *s.box = onset.box;
+    out.phi = onset.phi;
+    out.pressure = onset.pressure;
     return out;
 }
 

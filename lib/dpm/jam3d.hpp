@@ -1,8 +1,9 @@
 // Jamming of a small bidisperse packing of 3D deformable particles in a periodic cubic box, DPM section 9.4
-// (protocol P-DPM-JAM in 3D, for the packings of Fig. 9.15b): particles placed at random without overlap;
-// isotropic compression (particle centres scaled, shapes kept) in steps Delta L/L, FIRE after each, undo
-// and halve on overshoot, until 1 <= P/P_t < 1.01 (jam_schedule.hpp); P = Tr(Sigma)/3 of the 3D virial
-// stress (system3d.hpp, the analogue of eq. 9.26).
+// (protocol P-DPM-JAM in 3D, for the packings of Figs. 9.15b and 9.16b): particles placed at random without
+// overlap; isotropic compression (particle centres scaled, shapes kept) in steps Delta L/L, FIRE after each,
+// undo and halve on overshoot, until 1 <= P/P_t < 1.01 (jam_schedule.hpp); P = Tr(Sigma)/3 of the 3D virial
+// stress (system3d.hpp, the analogue of eq. 9.26). Then, optionally, further targets log-spaced up to
+// pressure_max, each reached the same way from the previous packing (as in 2D, jam.hpp).
 //
 // Particles: 50:50 bidisperse, both on the same geodesic mesh, the large ones scaled by size_ratio in
 // diameter; vertex diameter sigma = 1 and the small particles' mean edge 0.85 sigma (as the 2D polygons,
@@ -29,6 +30,8 @@ struct Jam3dOptions
     std::string mesh = "geodesic42"; // mesh3d.hpp's names
     double size_ratio = 1.4;         // diameter ratio large/small
     double pressure_onset = 1e-7;    // P_t [k_v v0]
+    double pressure_max = 1e-3;      // largest pressure of the compression after onset [k_v v0]
+    int pressures = 0;               // targets log-spaced in (P_t, pressure_max] after onset; 0: onset only
     double A0_floppy = 1.04;         // floppy particles' preferred shape parameter A0^3D
     Stiffness3d stiffness;           // k_a, k_b, gamma (units above); k_v v0^2 = k_c sigma^2
     double start_fraction = 0.4;     // sum_mu (2 R_mu + sigma)^3 / L^3 at the random start
@@ -37,16 +40,25 @@ struct Jam3dOptions
     InteractionKind interaction = InteractionKind::rough;
 };
 
+// A relaxed packing at one target pressure.
+struct Jam3dState
+{
+    double phi = 0, pressure = 0; // packing_fraction3d, P [k_v v0]
+    Eigen::VectorXd x;
+    double box = 0; // its box side [sigma]
+};
+
 struct Jam3dResult
 {
-    DpmSystem3d system;
-    Eigen::VectorXd x;          // the relaxed packing at P_t
-    double pressure_unit = 1;   // k_v v0 in k_c/sigma
-    double eigenvalue_unit = 1; // k_v v0^(4/3) in k_c
-    double energy_unit = 1;     // k_v v0^2 in k_c sigma^2
-    double length_unit = 1;     // v0^(1/3) in sigma
-    double phi = 0;             // packing_fraction3d
-    double pressure = 0;        // P [k_v v0]
+    DpmSystem3d system;             // with the box of the packing at P_t
+    std::vector<Jam3dState> states; // P_t first, then the targets above it (Jam3dOptions::pressures)
+    Eigen::VectorXd x;              // the relaxed packing at P_t
+    double pressure_unit = 1;       // k_v v0 in k_c/sigma
+    double eigenvalue_unit = 1;     // k_v v0^(4/3) in k_c
+    double energy_unit = 1;         // k_v v0^2 in k_c sigma^2
+    double length_unit = 1;         // v0^(1/3) in sigma
+    double phi = 0;                 // packing_fraction3d
+    double pressure = 0;            // P [k_v v0]
     long fire_iterations = 0;
     long box_steps = 0;
     FireOptions fire; // the protocol's FIRE settings

@@ -3,8 +3,17 @@
 #include "core/errors.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace softgrain::dpm {
+
+std::vector<double> pressure_targets(double onset, double pressure_max, int count)
+{
+    std::vector<double> targets{onset};
+    for (int k = 1; k <= count; ++k)
+        targets.push_back(onset * std::pow(pressure_max / onset, double(k) / count));
+    return targets;
+}
 
 long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
                     const CompressiblePacking& packing)

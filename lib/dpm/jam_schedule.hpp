@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 namespace softgrain::dpm {
 
@@ -27,6 +28,10 @@ struct BoxSchedule
     double onset = 0;           // P_t: below it the step never grows
     long step_index = 0;        // box changes so far (diagnostics)
 };
+
+// The targets of a compression: P_t, then `count` pressures log-spaced in (P_t, pressure_max]
+// (P_t (pressure_max/P_t)^(k/count), k = 1 ... count).
+std::vector<double> pressure_targets(double onset, double pressure_max, int count);
 
 // Changes the box until 1 <= P/target < 1.01; returns the FIRE iterations spent. NumericalError if the
 // step falls below 1e-15 (a rearrangement makes the pressure jump over the window).

@@ -1,7 +1,6 @@
 #include "dpm/shear_modulus.hpp"
 
 #include "core/errors.hpp"
-#include "dpm/modes.hpp"
 #include "dpm/stress.hpp"
 
 #include <gsl/gsl_fit.h>
@@ -11,13 +10,13 @@
 
 namespace softgrain::dpm {
 
-ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
+ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorXd x, double dgamma, int steps,
                                  double force_tolerance)
 {
     ShearModulusResult out;
     std::vector<double> strain;
     const auto minimise = [&](int step) {
-        out.force_max = polish_newton(system, x, force_tolerance, 30);
+        out.force_max = polish_newton(packing.energy, x, force_tolerance, 30);
         if (!(out.force_max < force_tolerance)) {
             std::ostringstream what;
             what << "Newton minimisation after a shear step (largest force " << out.force_max << ")";
@@ -27,16 +26,45 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
         }
     };
     for (int step = 0; step <= steps; ++step) {
-        if (step > 0) shear_packing(system, x, dgamma);
+        if (step > 0) packing.shear(x, dgamma);
         minimise(step);
         strain.push_back(step * dgamma);
-        const Eigen::Matrix2d sigma = stress_tensor(system, x);
-        out.shear_stress.push_back(-0.5 * (sigma(0, 1) + sigma(1, 0))); // symmetric at equilibrium
+        out.shear_stress.push_back(packing.stress(x));
     }
     double c0 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
     gsl_fit_linear(strain.data(), 1, out.shear_stress.data(), 1, strain.size(), &c0, &out.modulus, &c00, &c01,
                    &c11, &sumsq);
     return out;
+}
+
+ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
+                                 double force_tolerance)
+{
+    const ShearablePacking packing{
+        [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
+            return total_energy(system, y, g, m);
+        },
+        [&system](Eigen::VectorXd& y, double dgamma_step) { shear_packing(system, y, dgamma_step); },
+        [&system](const Eigen::VectorXd& y) {
+            const Eigen::Matrix2d sigma = stress_tensor(system, y);
+            return -0.5 * (sigma(0, 1) + sigma(1, 0)); // symmetric at equilibrium
+        }};
+    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance);
+}
+
+ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
+                                 double force_tolerance)
+{
+    const ShearablePacking packing{
+        [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
+            return total_energy3d(system, y, g, m);
+        },
+        [&system](Eigen::VectorXd& y, double dgamma_step) { shear_packing3d(system, y, dgamma_step); },
+        [&system](const Eigen::VectorXd& y) {
+            const Eigen::Matrix3d sigma = stress_tensor3d(system, y);
+            return -0.5 * (sigma(0, 1) + sigma(1, 0));
+        }};
+    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance);
 }
 
 } // namespace softgrain::dpm

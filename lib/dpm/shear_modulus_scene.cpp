@@ -8,44 +8,9 @@
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/jam_scene.hpp"
-#include "dpm/shear_modulus.hpp"
-
-#include <gsl/gsl_fit.h>
-
-#include <cmath>
-#include <exception>
+#include "dpm/shear_modulus_ensemble.hpp"
 
 namespace softgrain::dpm {
-
-namespace {
-
-// One packing of the ensemble: its pressures (onset first) and shear moduli, in the model's unit.
-struct Member
-{
-    std::vector<double> pressure, phi, modulus;
-    long fire_iterations = 0;
-    double force_max = 0; // largest force after any Newton minimisation
-};
-
-Member member(const JamOptions& o, double dgamma, int steps, double force_tolerance)
-{
-    const JamResult r = jam(o);
-    Member m;
-    m.fire_iterations = r.fire_iterations;
-    DpmSystem system = r.system;
-    for (const JamState& state : r.states) {
-        *system.box = state.box;
-        const ShearModulusResult g =
-            shear_modulus(system, state.x, dgamma, steps, force_tolerance * r.pressure_unit);
-        m.pressure.push_back(state.pressure);
-        m.phi.push_back(state.phi);
-        m.modulus.push_back(g.modulus / r.pressure_unit);
-        m.force_max = std::max(m.force_max, g.force_max);
-    }
-    return m;
-}
-
-} // namespace
 
 void run_shear_modulus(const Parameters& p, RunContext& context)
 {
@@ -61,66 +26,22 @@ void run_shear_modulus(const Parameters& p, RunContext& context)
     const int steps = static_cast<int>(p.integer("strain_steps"));
     const double tolerance = p.real("force_tolerance");
 
-    // Independent ensemble members (seeds first_seed, first_seed + 1, ...), in parallel.
-    std::vector<Member> members(packings);
-    std::vector<std::exception_ptr> errors(packings);
-#pragma omp parallel for schedule(dynamic)
-    for (int k = 0; k < packings; ++k) {
-        try {
-            JamOptions mine = o;
-            mine.seed = first_seed + static_cast<std::uint64_t>(k);
-            members[k] = member(mine, dgamma, steps, tolerance);
-        } catch (...) {
-            errors[k] = std::current_exception();
-        }
-    }
-    for (const auto& e : errors)
-        if (e) std::rethrow_exception(e);
-
-    auto& each = context.table("modulus.dat", {{"packing", "1", "ensemble member (seed - first seed)"},
-                                               {"P", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"},
-                                               {"phi", "1", "packing fraction"},
-                                               {"G", "k_c or k_a a0", "shear modulus d(-Sigma_xy)/d gamma"}});
-    long iterations = 0;
-    double force_max = 0;
-    const std::size_t levels = members.front().pressure.size();
-    std::vector<double> mean_p(levels, 0.0), mean_g(levels, 0.0);
-    for (int k = 0; k < packings; ++k) {
-        const Member& m = members[k];
-        iterations += m.fire_iterations;
-        force_max = std::max(force_max, m.force_max);
-        for (std::size_t l = 0; l < levels; ++l) {
-            each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l]});
-            mean_p[l] += m.pressure[l] / packings;
-            mean_g[l] += m.modulus[l] / packings;
-        }
-    }
-    auto& mean =
-        context.table("mean_modulus.dat", {{"P", "k_c or k_a a0", "ensemble mean pressure"},
-                                           {"G", "k_c or k_a a0", "ensemble mean shear modulus <G>"}});
-    std::vector<double> log_p, log_g;
-    for (std::size_t l = 0; l < levels; ++l) {
-        mean.row({mean_p[l], mean_g[l]});
-        if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
-            log_p.push_back(std::log(mean_p[l]));
-            log_g.push_back(std::log(mean_g[l]));
-        }
-    }
-    context.count_steps(iterations);
+    // Independent ensemble members (seeds first_seed, first_seed + 1, ...).
+    const std::vector<ModulusMember> members = run_members(packings, [&](int k) {
+        JamOptions mine = o;
+        mine.seed = first_seed + static_cast<std::uint64_t>(k);
+        const JamResult r = jam(mine);
+        ModulusMember m = moduli_at_states(r.system, r.states, r.pressure_unit, dgamma, steps, tolerance);
+        m.fire_iterations = r.fire_iterations;
+        return m;
+    });
+    const EnsembleModulus e = report_ensemble(
+        members, {"modulus.dat", "mean_modulus.dat", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"},
+        context);
+    context.count_steps(e.fire_iterations);
     auto& s = context.summary();
     s["packings"] = packings;
-    s["force_max"] = force_max;
-    s["G_onset"] = mean_g.front();
-    s["G_max_pressure"] = mean_g.back();
-    if (log_p.size() >= 2) {
-        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
-        gsl_fit_linear(log_p.data(), 1, log_g.data(), 1, log_p.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-        s["shear_modulus_exponent"] = c1;
-        s["shear_modulus_exponent_error"] = std::sqrt(c11);
-    } else {
-        s["shear_modulus_exponent"] = nullptr;
-        s["shear_modulus_exponent_error"] = nullptr;
-    }
+    write_modulus_summary(e, "", s);
 }
 
 std::vector<ParameterSpec> shear_modulus_parameters()

@@ -80,10 +80,7 @@ Eigen::Vector2d DpmSystem::image(const Eigen::Vector2d& d) const
 
 void shear_packing(DpmSystem& system, Eigen::VectorXd& x, double dgamma)
 {
-    if (!system.box) throw std::logic_error("shear_packing: the system has no periodic box");
-    for (Eigen::Index v = 0; v < x.size() / 2; ++v)
-        x(2 * v) += dgamma * x(2 * v + 1);
-    system.lees_edwards_strain += dgamma;
+    shear_vertices<2>(system, x, dgamma);
 }
 
 void scale_packing(DpmSystem& system, Eigen::VectorXd& x, double f)

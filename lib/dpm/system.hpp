@@ -86,13 +86,18 @@ inline Eigen::Vector2d wrap_into_box(const Eigen::Vector2d& p, const Eigen::Vect
     return p - (L.array() * (p.array() / L.array()).floor()).matrix();
 }
 
-// Minimum image under Lees-Edwards boundaries with shear strain gamma: the row of images n_y boxes up is
-// shifted by n_y gamma L_y in x. First the y image, then x: d - n_y (gamma L_y, L_y) - n_x (L_x, 0).
-inline Eigen::Vector2d lees_edwards_image(Eigen::Vector2d d, const Eigen::Vector2d& L, double gamma)
+// Minimum image under Lees-Edwards boundaries with shear strain gamma (x sheared along y), in 2D or 3D: the
+// row of images n_y boxes up is shifted by n_y gamma L_y in x. First the y image, then the others:
+// d - n_y (gamma L_y, L_y, 0) - n_x (L_x, 0, 0) - n_z (0, 0, L_z).
+template <int Dim>
+Eigen::Matrix<double, Dim, 1> lees_edwards_image(Eigen::Matrix<double, Dim, 1> d,
+                                                 const Eigen::Matrix<double, Dim, 1>& L, double gamma)
 {
     const double ny = std::round(d.y() / L.y());
-    d -= ny * Eigen::Vector2d(gamma * L.y(), L.y());
-    d.x() -= L.x() * std::round(d.x() / L.x());
+    d.x() -= ny * (gamma * L.y());
+    d.y() -= ny * L.y();
+    for (int a = 0; a < Dim; ++a)
+        if (a != 1) d(a) -= L(a) * std::round(d(a) / L(a));
     return d;
 }
 

@@ -5,6 +5,7 @@
 #include "dpm/interactions.hpp"
 #include "dpm/interactions3d.hpp"
 #include "dpm/scale_packing.hpp"
+#include "dpm/system.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -14,7 +15,7 @@ namespace softgrain::dpm {
 
 Eigen::Vector3d DpmSystem3d::image(const Eigen::Vector3d& d) const
 {
-    return box ? Eigen::Vector3d(d - *box * (d / *box).array().round().matrix()) : d;
+    return box ? lees_edwards_image<3>(d, Eigen::Vector3d::Constant(*box), lees_edwards_strain) : d;
 }
 
 void DpmSystem3d::add_particle(int mesh, const Eigen::Matrix3Xd& v, double sigma,
@@ -54,16 +55,28 @@ void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Cont
         std::fill(owner.begin() + p.first, owner.begin() + p.first + p.count, static_cast<int>(m));
         largest_sigma = std::max(largest_sigma, p.sigma);
     }
-    // A vertex pair has one image within reach only if L > 2 sigma (decision dpm-3d-vertex-image).
-    if (s.box && *s.box <= 2 * largest_sigma)
-        throw NumericalError("periodic box side " + std::to_string(*s.box) +
-                                 " not above twice the vertex diameter " + std::to_string(largest_sigma),
-                             0,
-                             "the packing is compressed beyond the minimum-image range; lower the pressure");
+    // Under a Lees-Edwards strain gamma the cell list runs on the coordinates x - gamma y (the shear undone),
+    // whose images form the plain cubic lattice; a pair r apart in space is at most r (1 + |gamma|) apart
+    // there, so the reach grows by that factor. gamma and gamma - 1 give the same images (cube): the one in
+    // [-1/2, 1/2] is used (decision dpm-3d-lees-edwards).
+    const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain),
+                 reach = largest_sigma * (1 + std::abs(gamma));
+    // A vertex pair has one image within reach only if L > 2 reach (decision dpm-3d-vertex-image).
+    if (s.box && *s.box <= 2 * reach)
+        throw NumericalError(
+            "periodic box side " + std::to_string(*s.box) + " not above twice the vertex diameter " +
+                std::to_string(largest_sigma) + " times 1 + |Lees-Edwards strain|",
+            0, "the packing is compressed beyond the minimum-image range; lower the pressure");
     std::optional<Vec<3>> periodic;
     if (s.box) periodic = Vec<3>::Constant(*s.box);
-    NeighbourList<3> list(largest_sigma, 0.0, periodic);
-    list.update(x.reshaped(3, n));
+    NeighbourList<3> list(reach, 0.0, periodic);
+    if (gamma == 0) {
+        list.update(x.reshaped(3, n));
+    } else {
+        Eigen::Matrix3Xd unsheared = x.reshaped(3, n);
+        unsheared.row(0) -= gamma * unsheared.row(1);
+        list.update(unsheared);
+    }
     for (const auto& [i, j] : list.pairs()) {
         if (owner[i] == owner[j]) continue;
         const double sigma = 0.5 * (s.particles[owner[i]].sigma + s.particles[owner[j]].sigma);
@@ -126,6 +139,11 @@ Eigen::Matrix3d stress_tensor3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
     moment -= x.reshaped(3, n) * g.reshaped(3, n).transpose();
     interaction_energy3d(s, x, nullptr, nullptr, &moment);
     return moment / std::pow(*s.box, 3);
+}
+
+void shear_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double dgamma)
+{
+    shear_vertices<3>(s, x, dgamma);
 }
 
 void scale_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double f)

@@ -6,8 +6,9 @@
 //   sigma_mb = (sigma_mu + sigma_beta)/2,
 //
 // or, with interaction = smooth, through the vertex-face repulsion of sphero-polyhedra (interactions3d.hpp),
-// in open space or a periodic cubic box of side L. r_ij is the minimum-image distance of each vertex pair
-// (decision dpm-3d-vertex-image): exact for L > 2 max sigma, whatever the size of the particles.
+// in open space or a periodic cubic box of side L, optionally sheared (Lees-Edwards). r_ij is the
+// minimum-image distance of each vertex pair (decision dpm-3d-vertex-image): exact for L > 2 max sigma (1 +
+// |gamma|), whatever the size of the particles.
 //
 // State: one flat Eigen::VectorXd x, vertex v at x(3v) ... x(3v + 2); each particle's vertices are stored
 // unwrapped (the particle whole). The total energy, its gradient (= minus the forces) and its exact Hessian
@@ -40,6 +41,9 @@ struct DpmSystem3d
     std::vector<Particle3d> particles;
     double kc = 1.0;           // contact stiffness k_c [E/L^2]; 0 switches the interaction off
     std::optional<double> box; // side L of the periodic cubic box (corner at the origin); absent: open space
+    // Lees-Edwards shear strain gamma of the box (sec. 9.4.3, x sheared along y): the images one box up in y
+    // are shifted by gamma L in x (lees_edwards_image, system.hpp). 0: the plain periodic cube.
+    double lees_edwards_strain = 0;
     // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
     InteractionKind interaction = InteractionKind::rough;
 
@@ -47,7 +51,7 @@ struct DpmSystem3d
     {
         return particles.empty() ? 0 : particles.back().first + particles.back().count;
     }
-    // Nearest periodic image of a separation (d itself without a box).
+    // Nearest periodic image of a separation under the Lees-Edwards strain (d itself without a box).
     Eigen::Vector3d image(const Eigen::Vector3d& d) const;
     // Appends a particle on meshes[mesh] with the given vertices (3 x N, in the mesh's vertex order).
     void add_particle(int mesh, const Eigen::Matrix3Xd& vertices, double sigma,
@@ -75,6 +79,10 @@ inline double pressure3d(const Eigen::Matrix3d& stress)
 {
     return stress.trace() / 3.0;
 }
+
+// Simple shear step of sec. 9.4.3: x_i += dgamma y_i for every vertex, and the Lees-Edwards strain grows by
+// dgamma. The system must have a box.
+void shear_packing3d(DpmSystem3d& system, Eigen::VectorXd& x, double dgamma);
 
 // Affine compression of a periodic packing by the factor f: every particle's centre (vertex mean) is scaled
 // by f and its shape kept; the box side is scaled by f (the compression step of section 9.4).

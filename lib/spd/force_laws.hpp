@@ -31,20 +31,31 @@ struct ThreeForces
 {
     Vec2 previous, centre, next;
 };
-inline ThreeForces torque_to_couples(const Vec2& x_prev, const Vec2& x, const Vec2& x_next, double M)
+// The same from the element vectors e1 = x - x_prev, e2 = x_next - x and their squared lengths (a caller
+// that has them from the stretch law passes them on).
+inline ThreeForces edge_couples(const Vec2& e1, double e1_squared, const Vec2& e2, double e2_squared,
+                                double M)
 {
-    const Vec2 e1 = x - x_prev, e2 = x_next - x;
-    const Vec2 g1 = Vec2(-e1.y(), e1.x()) / e1.squaredNorm(); // d(direction angle of e1)/d(e1)
-    const Vec2 g2 = Vec2(-e2.y(), e2.x()) / e2.squaredNorm();
+    const Vec2 g1 = Vec2(-e1.y(), e1.x()) / e1_squared; // d(direction angle of e1)/d(e1)
+    const Vec2 g2 = Vec2(-e2.y(), e2.x()) / e2_squared;
     // theta = angle(e2) - angle(e1): dtheta/dx_prev = g1, dtheta/dx = -g1 - g2, dtheta/dx_next = g2.
     return {-M * g1, M * (g1 + g2), -M * g2};
 }
-
-// Turning angle at x between the elements (x_prev, x) and (x, x_next), in (-pi, pi], CCW positive.
-inline double turning_angle(const Vec2& x_prev, const Vec2& x, const Vec2& x_next)
+inline ThreeForces torque_to_couples(const Vec2& x_prev, const Vec2& x, const Vec2& x_next, double M)
 {
     const Vec2 e1 = x - x_prev, e2 = x_next - x;
+    return edge_couples(e1, e1.squaredNorm(), e2, e2.squaredNorm(), M);
+}
+
+// Turning angle from the element vector e1 to e2, in (-pi, pi], CCW positive.
+inline double edge_turning_angle(const Vec2& e1, const Vec2& e2)
+{
     return std::atan2(cross2(e1, e2), e1.dot(e2));
+}
+// Turning angle at x between the elements (x_prev, x) and (x, x_next).
+inline double turning_angle(const Vec2& x_prev, const Vec2& x, const Vec2& x_next)
+{
+    return edge_turning_angle(x - x_prev, x_next - x);
 }
 
 // Fig. 5: a force acting on an element of length l at a distance a from its end k is shared by the end

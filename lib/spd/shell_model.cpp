@@ -10,7 +10,9 @@
 #include <cmath>
 #include <exception>
 #include <numbers>
+#include <numeric>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace softgrain::spd {
@@ -48,6 +50,8 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
         inverse_mass_.segment<2>(2 * (n0 + k)).setConstant(shell.rigid ? 0.0 : 1.0 / vertex_mass);
     }
     length_prev_.resize(n0 + n, 0.0);
+    edge_.resize(n0 + n, Vec2::Zero());
+    edge_squared_.resize(n0 + n, 0.0);
     axial_.resize(n0 + n, 0.0);
     angle_prev_.resize(n0 + n, 0.0);
     torque_.resize(n0 + n, 0.0);
@@ -106,28 +110,42 @@ double ShellModel::area(int shell) const
 // couples (eqs. (8)-(9)).
 void ShellModel::internal_forces(const Shell& s)
 {
+    // Raw views: kept in registers across the stores into f (members would be reloaded after each store).
+    const double* x = x_.data();
+    double* f = f_.data();
+    const auto add = [f](int i, const Vec2& F) {
+        f[2 * i] += F.x();
+        f[2 * i + 1] += F.y();
+    };
+    Vec2* edge = edge_.data();
+    double* edge_squared = edge_squared_.data();
+    const ShellLaws laws = s.laws;
     for (int k = 0; k < s.elements(); ++k) {
         const int i = s.first + k, j = next(s, k);
-        const Vec2 e = vertex(j) - vertex(i);
-        const double l = e.norm();
+        const Vec2 e(x[2 * j] - x[2 * i], x[2 * j + 1] - x[2 * i + 1]);
+        edge[i] = e;
+        edge_squared[i] = e.squaredNorm();
+        const double l = std::sqrt(edge_squared[i]);
         const double contraction = length_prev_[i] - l; // compression positive (section 2.2)
-        axial_[i] = elastoplastic_update(axial_[i], s.laws.k_s * contraction, s.laws.F_Y);
+        const double F = elastoplastic_update(axial_[i], laws.k_s * contraction, laws.F_Y);
+        axial_[i] = F;
         length_prev_[i] = l;
-        const Vec2 push = axial_[i] * e / l; // a compressed element pushes its ends apart
-        add_force(j, push);
-        add_force(i, -push);
+        const Vec2 push = F * e / l; // a compressed element pushes its ends apart
+        add(j, push);
+        add(i, -push);
     }
     for (int k = 0; k < s.count; ++k) {
         if (!s.has_hinge(k)) continue;
         const int i = s.first + k, a = prev(s, k), b = next(s, k);
-        const double theta = turning_angle(vertex(a), vertex(i), vertex(b));
-        torque_[i] =
-            elastoplastic_update(torque_[i], s.laws.k_b * wrapped(theta - angle_prev_[i]), s.laws.M_Y);
+        const double theta = edge_turning_angle(edge[a], edge[i]);
+        const double M =
+            elastoplastic_update(torque_[i], laws.k_b * wrapped(theta - angle_prev_[i]), laws.M_Y);
+        torque_[i] = M;
         angle_prev_[i] = theta;
-        const ThreeForces couples = torque_to_couples(vertex(a), vertex(i), vertex(b), torque_[i]);
-        add_force(a, couples.previous);
-        add_force(i, couples.centre);
-        add_force(b, couples.next);
+        const ThreeForces couples = edge_couples(edge[a], edge_squared[a], edge[i], edge_squared[i], M);
+        add(a, couples.previous);
+        add(i, couples.centre);
+        add(b, couples.next);
     }
 }
 
@@ -244,12 +262,38 @@ void ShellModel::update_contact_candidates()
         if (old != candidates_.end() && key(*old) == key(c)) c.friction = old->friction;
     }
     candidates_.swap(fresh);
+    index_candidates();
+}
+
+// The two indexes of the candidates: the contact groups (runs of one vertex against one other shell), and
+// per vertex the candidates acting on it in candidate order (a counting sort by vertex, stable in m).
+void ShellModel::index_candidates()
+{
     contact_groups_.clear();
     for (std::size_t m = 0; m < candidates_.size(); ++m)
         if (m == 0 || candidates_[m].vertex != candidates_[m - 1].vertex ||
             shell_of(candidates_[m].a) != shell_of(candidates_[m - 1].a))
             contact_groups_.push_back(m);
     contact_groups_.push_back(candidates_.size());
+
+    if (candidates_.size() >= (std::size_t{1} << 30))
+        throw NumericalError("contact candidates", steps_,
+                             std::to_string(candidates_.size()) + " candidates, above the 2^30 of the index");
+    touched_.assign(vertices(), 0);
+    gather_offsets_.assign(vertices() + 1, 0);
+    for (const Candidate& c : candidates_)
+        for (const int i : {c.vertex, c.a, c.b})
+            ++gather_offsets_[i + 1];
+    std::partial_sum(gather_offsets_.begin(), gather_offsets_.end(), gather_offsets_.begin());
+    gather_terms_.resize(gather_offsets_.back());
+    std::vector<std::size_t> fill(gather_offsets_.begin(), gather_offsets_.end() - 1);
+    for (std::size_t m = 0; m < candidates_.size(); ++m) {
+        const Candidate& c = candidates_[m];
+        const auto term = static_cast<std::uint32_t>(m << 2);
+        gather_terms_[fill[c.vertex]++] = term | role_vertex;
+        gather_terms_[fill[c.a]++] = term | role_end_a;
+        gather_terms_[fill[c.b]++] = term | role_end_b;
+    }
 }
 
 // The cheap rejection before the exact distance: the vertex lies outside the bounding box of the
@@ -309,9 +353,11 @@ void ShellModel::evaluate_contact(Candidate& cand, double old_friction, double d
 // energy into a vertex sliding across the corner. The distance to the nearest element is continuous, so is
 // the energy. The group [begin, end) holds the candidates of one vertex against the elements of one other
 // shell. A friction history dropped here restarts at zero (the scenes of section 5 are frictionless).
-void ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, double dt)
+// Returns whether a candidate of the group overlaps beyond 95% (exit 3, throw_overlap).
+bool ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, double dt)
 {
     std::size_t nearest = end;
+    bool overlap = false;
     for (std::size_t k = begin; k < end; ++k) {
         Candidate& cand = candidates_[k];
         const double old_friction = cand.friction;
@@ -319,6 +365,7 @@ void ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, doub
         cand.active = cand.overlap = false;
         if (outside_bounding_box(cand)) continue;
         evaluate_contact(cand, old_friction, dt);
+        overlap = overlap || cand.overlap;
         if (cand.active && (nearest == end || cand.distance < candidates_[nearest].distance)) nearest = k;
     }
     for (std::size_t k = begin; k < end; ++k)
@@ -326,40 +373,62 @@ void ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, doub
             candidates_[k].active = false;
             candidates_[k].friction = 0;
         }
+    if (nearest != end) {
+        const Candidate& cand = candidates_[nearest];
+        for (const int i : {cand.vertex, cand.a, cand.b})
+#pragma omp atomic write
+            touched_[i] = 1;
+    }
+    return overlap;
 }
 
-// Adds the contacts of all candidates to the vertices in the fixed order of the candidates (vertex, element):
-// the forces do not depend on the number of threads that evaluated them, bit for bit.
-void ShellModel::gather_contact_forces()
+// The contact force on vertex i (its own contacts, and the reactions on it as an element end) and the
+// normal force it receives as the contacting vertex, summed in candidate order: the order of a serial loop
+// over the candidates, whatever the number of threads, so the forces do not depend on it, bit for bit.
+// Added to the vertex's force.
+void ShellModel::gather_contact_force(int i)
+{
+    Vec2 F = Vec2::Zero();
+    double fn = 0;
+    if (touched_[i])
+        for (std::size_t t = gather_offsets_[i]; t < gather_offsets_[i + 1]; ++t) {
+            const std::uint32_t term = gather_terms_[t];
+            const Candidate& cand = candidates_[term >> 2];
+            if (!cand.active) continue;
+            switch (term & 3u) {
+            case role_vertex:
+                F += cand.force;
+                fn += cand.fn;
+                break;
+            case role_end_a:
+                F -= cand.w_a * cand.force;
+                break;
+            default:
+                F -= cand.w_b * cand.force;
+                break;
+            }
+        }
+    touched_[i] = 0;
+    contact_force_.segment<2>(2 * i) = F;
+    contact_normal_[i] = fn;
+    add_force(i, F);
+}
+
+void ShellModel::throw_overlap() const
 {
     for (const Candidate& cand : candidates_) {
-        if (cand.overlap) {
-            const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
-            const double distance =
-                point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).distance;
-            std::ostringstream cause;
-            cause << "contact overlap " << reach - distance << " m above 95% of r_i + r_j = " << reach
-                  << " m (vertex " << cand.vertex << " of particle " << shell_of(cand.vertex)
-                  << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
-                  << " N/m can hold before the vertex crosses the element; use more nodes (more contact "
-                     "vertices share the load) or a stiffer contact";
-            throw NumericalError("contact overlap", steps_, cause.str());
-        }
-        if (!cand.active) continue;
-        contact_force_.segment<2>(2 * cand.vertex) += cand.force;
-        contact_force_.segment<2>(2 * cand.a) -= cand.w_a * cand.force;
-        contact_force_.segment<2>(2 * cand.b) -= cand.w_b * cand.force;
-        contact_normal_[cand.vertex] += cand.fn;
+        if (!cand.overlap) continue;
+        const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
+        const double distance =
+            point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).distance;
+        std::ostringstream cause;
+        cause << "contact overlap " << reach - distance << " m above 95% of r_i + r_j = " << reach
+              << " m (vertex " << cand.vertex << " of particle " << shell_of(cand.vertex)
+              << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
+              << " N/m can hold before the vertex crosses the element; use more nodes (more contact "
+                 "vertices share the load) or a stiffer contact";
+        throw NumericalError("contact overlap", steps_, cause.str());
     }
-    f_ += contact_force_;
-}
-
-void ShellModel::compute_forces(double dt)
-{
-    std::exception_ptr failure;
-#pragma omp parallel if (vertices() > parallel_vertices)
-    forces_in_region(dt, failure);
-    if (failure) std::rethrow_exception(failure);
 }
 
 namespace {
@@ -375,23 +444,42 @@ void on_one_thread(std::exception_ptr& failure, Task&& task)
         failure = std::current_exception();
     }
 }
+
+// Sets flag to true from one thread of a region (flags only ever turn true within a region).
+void raise_flag(bool& flag)
+{
+#pragma omp atomic write
+    flag = true;
+}
 } // namespace
 
 // The force evaluation inside an open parallel region (orphaned work-sharing: serial when none is open).
-// Each shell writes the forces of its own vertices only, each contact group its own records, and the gather
-// adds the contacts in a fixed order: the results do not depend on the number of threads, bit for bit.
-void ShellModel::forces_in_region(double dt, std::exception_ptr& failure)
+// Each shell writes the forces of its own vertices only, each contact group its own records, and each vertex
+// gathers its contact forces in candidate order: the results do not depend on the number of threads, bit
+// for bit. Three barriers when the candidates stay: after the reset (the list check must be agreed on),
+// after the contacts, after the gather.
+template <class BeforeVertex, class AfterVertex>
+void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& before, AfterVertex&& after)
 {
     const bool contacts = contact_.k_n > 0;
-    const long n = vertices();
-#pragma omp for schedule(static)
-    for (long i = 0; i < n; ++i) {
+    const int n = vertices();
+    bool stale = contacts && !neighbours_; // this thread's share of flags.list_stale
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; ++i) {
+        before(i);
         f_.segment<2>(2 * i) = applied_.segment<2>(2 * i);
-        contact_force_.segment<2>(2 * i).setZero();
-        contact_normal_[i] = 0;
     }
-    if (contacts) on_one_thread(failure, [&] { update_contact_candidates(); });
-    if (failure) return; // every thread sees it after the barrier of the single construct
+    // The same static schedule: each thread checks the vertices it has just moved (no barrier needed).
+    if (contacts && !stale) {
+        const NeighbourList<2>& list = *neighbours_;
+#pragma omp for schedule(static) nowait
+        for (int i = 0; i < n; ++i)
+            if (list.moved_beyond_half_skin(i, vertex(i))) stale = true;
+    }
+    if (stale) raise_flag(flags.list_stale);
+#pragma omp barrier
+    if (flags.list_stale) on_one_thread(flags.failure, [&] { update_contact_candidates(); });
+    if (flags.failure) return; // every thread sees it after the barrier of the single construct
     const int n_shells = static_cast<int>(shells_.size());
     const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
 #pragma omp for schedule(dynamic, 4) nowait
@@ -401,14 +489,32 @@ void ShellModel::forces_in_region(double dt, std::exception_ptr& failure)
         internal_forces(s);
         if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
     }
+    bool overlap = false;
 #pragma omp for schedule(static)
     for (long g = 0; g < n_groups; ++g)
-        evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt);
-    if (contacts || !links_.empty())
-        on_one_thread(failure, [&] {
-            if (contacts) gather_contact_forces();
-            if (!links_.empty()) add_link_forces();
-        });
+        overlap = evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt) || overlap;
+    if (overlap) raise_flag(flags.overlap); // acted on after the region
+    if (!links_.empty()) on_one_thread(flags.failure, [&] { add_link_forces(); });
+    if (flags.failure) return;
+#pragma omp for schedule(static) nowait // the region ends next, or its owner goes on with the same vertices
+    for (int i = 0; i < n; ++i) {
+        if (contacts) {
+            gather_contact_force(i);
+        } else {
+            contact_force_.segment<2>(2 * i).setZero();
+            contact_normal_[i] = 0;
+        }
+        after(i);
+    }
+}
+
+void ShellModel::compute_forces(double dt)
+{
+    RegionFlags flags;
+    const auto nothing = [](int) {};
+#pragma omp parallel if (vertices() > parallel_vertices)
+    forces_in_region(dt, flags, nothing, nothing);
+    throw_region_failure(flags, dt);
 }
 
 // Section 6: the intact links, in their fixed order (forces independent of the thread count). A link is
@@ -455,39 +561,74 @@ void ShellModel::step(double dt, double damping)
     if (steps_ == 0) compute_forces(dt);
     const bool constrained =
         std::any_of(shells_.begin(), shells_.end(), [](const Shell& s) { return s.incompressible(); });
-    bool finite = true;
+    // Only a vertex faster than r_min/dt (r_min the smallest contact radius of the free shells) can have
+    // moved farther than its own radius: the cheap first test of step_too_long.
+    double r_min = INFINITY;
+    if (contact_.k_n > 0)
+        for (const Shell& s : shells_)
+            if (!s.rigid && s.radius > 0) r_min = std::min(r_min, s.radius);
+    const double speed_squared_limit = r_min * r_min / (dt * dt);
+    const auto moved_too_far = [&](int i) {
+        return speed_squared(i) > speed_squared_limit && step_too_long(i, dt);
+    };
+    RegionFlags flags;
     if (constrained) {
         step_constrained(dt, damping);
-        finite = x_.allFinite() && v_.allFinite();
+        for (int i = 0; i < vertices(); ++i) {
+            flags.non_finite = flags.non_finite || !vertex_finite(i);
+            flags.too_long = flags.too_long || moved_too_far(i);
+        }
     } else {
         // Velocity Verlet (kick-drift-kick, core/integrators.hpp) with the viscous damping -c v acting on the
-        // free degrees of freedom (the inverse mass masks the frozen ones), written per degree of freedom so
-        // that the whole step is one parallel region: the operations of velocity_verlet_step, in its order.
-        std::exception_ptr failure;
-        const long dofs = x_.size();
+        // free degrees of freedom (the inverse mass masks the frozen ones), the operations of
+        // velocity_verlet_step in its order, written per vertex so that the whole step is one parallel
+        // region: the first half-kick and the drift run in the loop that resets the forces, the second
+        // half-kick and the checks of the new state in the loop that completes them.
+        const double half_dt = 0.5 * dt;
+        double *const x = x_.data(), *const v = v_.data();
+        const double *const f = f_.data(), *const inverse_mass = inverse_mass_.data();
+        const auto kick = [=](int k) { v[k] += half_dt * inverse_mass[k] * (f[k] - damping * v[k]); };
 #pragma omp parallel if (vertices() > parallel_vertices)
         {
-#pragma omp for schedule(static)
-            for (long k = 0; k < dofs; ++k) {
-                v_[k] += 0.5 * dt * inverse_mass_[k] * (f_[k] - damping * v_[k]);
-                x_[k] += dt * v_[k];
-            }
-            forces_in_region(dt, failure);
-            if (!failure) {
-#pragma omp for schedule(static) reduction(&& : finite)
-                for (long k = 0; k < dofs; ++k) {
-                    v_[k] += 0.5 * dt * inverse_mass_[k] * (f_[k] - damping * v_[k]);
-                    finite = finite && std::isfinite(x_[k]) && std::isfinite(v_[k]);
+            bool non_finite = false, too_long = false; // this thread's findings
+            forces_in_region(
+                dt, flags,
+                [&](int i) {
+                    kick(2 * i);
+                    kick(2 * i + 1);
+                    x[2 * i] += dt * v[2 * i];
+                    x[2 * i + 1] += dt * v[2 * i + 1];
+                },
+                [&](int i) {
+                    kick(2 * i);
+                    kick(2 * i + 1);
+                });
+            // The checks of the new state, each thread on the vertices it has just kicked (the static
+            // schedule of the gather loop); a tight loop of its own costs less than the checks inside it.
+            if (!flags.failure) {
+#pragma omp for schedule(static) nowait
+                for (int i = 0; i < vertices(); ++i) {
+                    non_finite = non_finite || !vertex_finite(i);
+                    too_long = too_long || moved_too_far(i);
                 }
             }
+            if (non_finite) raise_flag(flags.non_finite);
+            if (too_long) raise_flag(flags.too_long);
         }
-        if (failure) std::rethrow_exception(failure);
     }
     ++steps_;
-    if (!finite) {
+    throw_region_failure(flags, dt);
+}
+
+// In the order a serial step meets them: an exception of a task, a contact overlap (during the force
+// evaluation), a non-finite state, a step longer than a contact radius.
+void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
+{
+    if (flags.failure) std::rethrow_exception(flags.failure);
+    if (flags.overlap) throw_overlap();
+    if (flags.non_finite) {
         int bad = 0; // the first vertex with a non-finite position or velocity
-        while (std::isfinite(x_[2 * bad]) && std::isfinite(x_[2 * bad + 1]) && std::isfinite(v_[2 * bad]) &&
-               std::isfinite(v_[2 * bad + 1]))
+        while (vertex_finite(bad))
             ++bad;
         std::ostringstream cause;
         cause << "vertex " << bad << " of particle " << shell_of(bad)
@@ -495,30 +636,29 @@ void ShellModel::step(double dt, double damping)
               << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
     }
-    if (contact_.k_n > 0) check_step_length(dt);
+    if (flags.too_long) throw_step_too_long(dt);
 }
 
 // A vertex that moves farther than its contact radius r in one step can pass through an element: the
 // sphero-segment law (section 2.3) sees a contact only while the vertex stays on its side. Such a step is the
 // sign of an energy blow-up (a time step above the stability limit, an exploding load), long before the
-// state turns non-finite: exit 3 naming the vertex, its particle and the step. The cheap test is against the
-// smallest contact radius of the free shells; a vertex that passes it is then checked against its own.
-void ShellModel::check_step_length(double dt) const
+// state turns non-finite: exit 3 naming the vertex, its particle and the step. Frozen vertices (walls,
+// clamps) move as prescribed and are not checked.
+bool ShellModel::step_too_long(int i, double dt) const
 {
-    double r_min = INFINITY;
-    for (const Shell& s : shells_)
-        if (!s.rigid && s.radius > 0) r_min = std::min(r_min, s.radius);
-    if (!std::isfinite(r_min)) return;
-    const double v_limit_squared = r_min * r_min / (dt * dt);
-    const int n = vertices();
-    for (int i = 0; i < n; ++i) {
-        const double v2 = v_[2 * i] * v_[2 * i] + v_[2 * i + 1] * v_[2 * i + 1];
-        if (v2 <= v_limit_squared || (inverse_mass_[2 * i] == 0 && inverse_mass_[2 * i + 1] == 0)) continue;
-        const double r = shells_[shell_of(i)].radius, moved = std::sqrt(v2) * dt;
-        if (r == 0 || moved <= r) continue;
+    const double r = shells_[shell_of(i)].radius;
+    if (r == 0 || (inverse_mass_[2 * i] == 0 && inverse_mass_[2 * i + 1] == 0)) return false;
+    return speed_squared(i) * dt * dt > r * r;
+}
+
+void ShellModel::throw_step_too_long(double dt) const
+{
+    for (int i = 0; i < vertices(); ++i) {
+        if (!step_too_long(i, dt)) continue;
+        const double moved = velocity(i).norm() * dt;
         std::ostringstream cause;
         cause << "vertex " << i << " of particle " << shell_of(i) << " moved " << moved
-              << " m in one step, more than its contact radius r = " << r
+              << " m in one step, more than its contact radius r = " << shells_[shell_of(i)].radius
               << " m (it can pass through an element): an energy blow-up, e.g. dt/dt_c = "
               << dt / critical_time_step() << " above the stable "
               << stable_time_step() / critical_time_step() << ", or an exploding load";
@@ -732,7 +872,11 @@ void ShellModel::transfer(Archive& archive)
         archive(*history);
     archive(shell_of_);
     archive(candidates_);
-    archive(contact_groups_);
+    if (archive.loading()) { // what follows from the state: the candidates' indexes, the scratch of forces
+        index_candidates();
+        edge_.assign(vertices(), Vec2::Zero());
+        edge_squared_.assign(vertices(), 0.0);
+    }
     bool listed = neighbours_.has_value();
     archive(listed);
     if (archive.loading()) {

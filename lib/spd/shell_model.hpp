@@ -178,8 +178,30 @@ class ShellModel
     void step_constrained(double dt, double damping);
     // Parallel regions open above this many vertices: below, a region costs more than it saves.
     static constexpr int parallel_vertices = 2000;
-    void forces_in_region(double dt, std::exception_ptr& failure);
-    void check_step_length(double dt) const;
+    // What the threads of a parallel region found, shared by them: each thread ORs its own findings in
+    // (atomic writes); the region's owner acts on them after it.
+    struct RegionFlags
+    {
+        bool list_stale = false; // a vertex moved beyond half the skin: the contact candidates are rebuilt
+        bool overlap = false;    // a contact overlaps beyond 95% of r_i + r_j (exit 3 after the region)
+        bool non_finite = false; // a position or velocity is not finite (exit 3)
+        bool too_long = false;   // a vertex moved farther than its contact radius in one step (exit 3)
+        std::exception_ptr failure;
+    };
+    // The force evaluation inside an open parallel region, with two per-vertex hooks that let a time step
+    // share its loops over the vertices: before(i) runs before vertex i's force is reset, after(i) once its
+    // force is complete.
+    template <class BeforeVertex, class AfterVertex>
+    void forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& before, AfterVertex&& after);
+    void throw_region_failure(const RegionFlags& flags, double dt) const;
+    bool step_too_long(int i, double dt) const;
+    double speed_squared(int i) const { return v_[2 * i] * v_[2 * i] + v_[2 * i + 1] * v_[2 * i + 1]; }
+    bool vertex_finite(int i) const
+    {
+        return std::isfinite(x_[2 * i]) && std::isfinite(x_[2 * i + 1]) && std::isfinite(v_[2 * i]) &&
+               std::isfinite(v_[2 * i + 1]);
+    }
+    void throw_step_too_long(double dt) const;
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
     // are xs (2 count entries): outward for a CCW polygon [m].
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
@@ -196,6 +218,10 @@ class ShellModel
     Eigen::VectorXd contact_force_;           // per dof: contact force received [N]
     std::vector<double> length_prev_, axial_; // per element (indexed by its first vertex): l at last call, F
     std::vector<double> angle_prev_, torque_; // per vertex: theta at last call, M
+    // Per element, scratch of internal_forces: the element vector x_(k+1) - x_k and its squared length, from
+    // the stretch law to the hinges (recomputed at every force evaluation, not state).
+    std::vector<Vec2> edge_;
+    std::vector<double> edge_squared_;
     std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
     std::vector<double> contact_normal_;                 // per vertex: normal contact force received [N]
     std::vector<int> shell_of_;                          // per vertex
@@ -220,8 +246,19 @@ class ShellModel
     int list_builds_ = 0;
     bool outside_bounding_box(const Candidate& candidate) const;
     void evaluate_contact(Candidate& candidate, double old_friction, double dt) const;
-    void evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
-    void gather_contact_forces();
+    bool evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
+    // Per vertex, the candidates whose contact acts on it (as the contacting vertex or as an end of the
+    // element), in candidate order: gather_terms_[gather_offsets_[i] ... gather_offsets_[i + 1]), each the
+    // candidate index m shifted left by 2 with its ContactRole in the low bits. touched_[i] is set when a
+    // contact acting on vertex i became active in this step (most vertices touch nothing: their gather is
+    // one test) and cleared by its gather.
+    enum ContactRole : std::uint32_t { role_vertex = 0, role_end_a = 1, role_end_b = 2 };
+    std::vector<std::size_t> gather_offsets_;
+    std::vector<std::uint32_t> gather_terms_;
+    std::vector<unsigned char> touched_;
+    void index_candidates();
+    void gather_contact_force(int i);
+    void throw_overlap() const;
     void add_link_forces();
     std::vector<CohesiveLink> links_;
     CohesiveLaw link_law_;

@@ -1,0 +1,82 @@
+#include "dpm/shear_modulus_ensemble.hpp"
+
+#include "core/output.hpp"
+
+#include <gsl/gsl_fit.h>
+
+#include <cmath>
+#include <exception>
+
+namespace softgrain::dpm {
+
+std::vector<ModulusMember> run_members(int count, const std::function<ModulusMember(int)>& member)
+{
+    std::vector<ModulusMember> members(count);
+    std::vector<std::exception_ptr> errors(count);
+#pragma omp parallel for schedule(dynamic)
+    for (int k = 0; k < count; ++k) {
+        try {
+            members[k] = member(k);
+        } catch (...) {
+            errors[k] = std::current_exception();
+        }
+    }
+    for (const auto& e : errors)
+        if (e) std::rethrow_exception(e);
+    return members;
+}
+
+EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
+                                RunContext& context)
+{
+    const std::string& unit = tables.pressure_unit;
+    auto& each = context.table(tables.per_packing, {{"packing", "1", "ensemble member (seed - first seed)"},
+                                                    {"P", unit, tables.pressure_meaning},
+                                                    {"phi", "1", "packing fraction"},
+                                                    {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"}});
+    EnsembleModulus out;
+    const auto packings = static_cast<double>(members.size());
+    const std::size_t levels = members.front().pressure.size();
+    std::vector<double> mean_p(levels, 0.0), mean_g(levels, 0.0);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const ModulusMember& m = members[k];
+        out.fire_iterations += m.fire_iterations;
+        out.force_max = std::max(out.force_max, m.force_max);
+        for (std::size_t l = 0; l < levels; ++l) {
+            each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l]});
+            mean_p[l] += m.pressure[l] / packings;
+            mean_g[l] += m.modulus[l] / packings;
+        }
+    }
+    auto& mean = context.table(
+        tables.mean, {{"P", unit, "ensemble mean pressure"}, {"G", unit, "ensemble mean shear modulus <G>"}});
+    std::vector<double> log_p, log_g;
+    for (std::size_t l = 0; l < levels; ++l) {
+        mean.row({mean_p[l], mean_g[l]});
+        if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
+            log_p.push_back(std::log(mean_p[l]));
+            log_g.push_back(std::log(mean_g[l]));
+        }
+    }
+    out.G_onset = mean_g.front();
+    out.G_max_pressure = mean_g.back();
+    if (log_p.size() >= 2) {
+        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
+        gsl_fit_linear(log_p.data(), 1, log_g.data(), 1, log_p.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+        out.eta = c1;
+        out.eta_error = std::sqrt(c11);
+    }
+    return out;
+}
+
+void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, nlohmann::json& s)
+{
+    s["G_onset" + suffix] = e.G_onset;
+    s["G_max_pressure" + suffix] = e.G_max_pressure;
+    s["shear_modulus_exponent" + suffix] = e.eta ? nlohmann::json(*e.eta) : nlohmann::json(nullptr);
+    s["shear_modulus_exponent_error" + suffix] =
+        e.eta_error ? nlohmann::json(*e.eta_error) : nlohmann::json(nullptr);
+    s["force_max" + suffix] = e.force_max;
+}
+
+} // namespace softgrain::dpm

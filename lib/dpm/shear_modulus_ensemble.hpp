@@ -1,0 +1,79 @@
+// The ensemble part of Fig. 9.16 (DPM sec. 9.4.3), shared by dpm.shear_modulus (2D) and dpm.shear_modulus3d:
+// G at every pressure of a jamming run (shear_modulus.hpp), packings in parallel, the ensemble means <P> and
+// <G> per pressure level, and the exponent eta of <G> ~ P^eta (eq. 9.29 at large P): the least-squares slope
+// of ln<G> against ln<P> over the levels above onset with <G> > 0 (decision dpm-shear-modulus).
+#pragma once
+
+#include "dpm/shear_modulus.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace softgrain {
+class RunContext;
+}
+
+namespace softgrain::dpm {
+
+// One packing of the ensemble: its pressures (onset first), packing fractions and shear moduli, in the
+// model's pressure unit.
+struct ModulusMember
+{
+    std::vector<double> pressure, phi, modulus;
+    long fire_iterations = 0;
+    double force_max = 0; // largest force after any Newton minimisation [system units]
+};
+
+// G at every state of a jamming run; a state has x, box, pressure and phi (JamState, Jam3dState);
+// pressure_unit: the model's pressure unit in the system's stress unit; force_tolerance in the model's
+// pressure unit (times length), as the scenes take it.
+template <class System, class States>
+ModulusMember moduli_at_states(System system, const States& states, double pressure_unit, double dgamma,
+                               int steps, double force_tolerance)
+{
+    ModulusMember m;
+    for (const auto& state : states) {
+        *system.box = state.box;
+        const ShearModulusResult g =
+            shear_modulus(system, state.x, dgamma, steps, force_tolerance * pressure_unit);
+        m.pressure.push_back(state.pressure);
+        m.phi.push_back(state.phi);
+        m.modulus.push_back(g.modulus / pressure_unit);
+        m.force_max = std::max(m.force_max, g.force_max);
+    }
+    return m;
+}
+
+// member(k) for k = 0 ... count - 1, in parallel (OpenMP, dynamic schedule); the first failure is rethrown.
+std::vector<ModulusMember> run_members(int count, const std::function<ModulusMember(int)>& member);
+
+// The ensemble's results; eta absent with fewer than two levels above onset with <G> > 0.
+struct EnsembleModulus
+{
+    double G_onset = 0, G_max_pressure = 0; // <G> at P_t and at the largest pressure
+    std::optional<double> eta, eta_error;   // slope of ln<G> against ln<P> and its standard error
+    long fire_iterations = 0;
+    double force_max = 0;
+};
+
+// Names and units of the two tables: per packing (packing, P, phi, G) and ensemble mean (P, G).
+struct ModulusTables
+{
+    std::string per_packing = "modulus.dat", mean = "mean_modulus.dat";
+    std::string pressure_unit;    // e.g. "k_a a0"
+    std::string pressure_meaning; // e.g. "pressure Tr(Sigma)/2, eq. (9.26)"
+};
+
+// Writes both tables and returns the means and the fit.
+EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
+                                RunContext& context);
+
+// Summary keys G_onset, G_max_pressure, shear_modulus_exponent, shear_modulus_exponent_error and force_max,
+// each followed by `suffix` (null for an absent exponent).
+void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, nlohmann::json& summary);
+
+} // namespace softgrain::dpm
