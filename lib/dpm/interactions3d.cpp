@@ -4,6 +4,7 @@
 #include "dpm/interactions.hpp"
 #include "dpm/system3d.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -52,17 +53,20 @@ std::vector<Eigen::Vector3d> images_within(const DpmSystem3d& s, const Eigen::Ve
         return d.norm() < reach ? std::vector<Eigen::Vector3d>{Eigen::Vector3d::Zero()}
                                 : std::vector<Eigen::Vector3d>{};
     const double L = *s.box;
-    // Images beyond the 27 around the nearest one are farther than 1.5 L.
-    if (reach >= 1.5 * L)
-        throw NumericalError("periodic box side " + std::to_string(L) +
-                                 " below 2/3 of a particle pair's reach " + std::to_string(reach),
+    // The image lattice is spanned by (L, 0, 0), (gamma L, L, 0), (0, 0, L) under a Lees-Edwards strain
+    // gamma (gamma and gamma - 1 span the same lattice: the one in [-1/2, 1/2] is used). Around the nearest
+    // image, the others beyond its 26 neighbours are farther than (1.5 - |gamma|) L.
+    const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain);
+    if (reach >= (1.5 - std::abs(gamma)) * L)
+        throw NumericalError("periodic box side " + std::to_string(L) + " below a particle pair's reach " +
+                                 std::to_string(reach) + " over 1.5 - |Lees-Edwards strain|",
                              0, "the packing is compressed beyond the image range; lower the pressure");
     const Eigen::Vector3d nearest = s.image(d) - d;
     std::vector<Eigen::Vector3d> shifts;
     for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j)
             for (int k = -1; k <= 1; ++k) {
-                const Eigen::Vector3d shift = nearest + L * Eigen::Vector3d(i, j, k);
+                const Eigen::Vector3d shift = nearest + L * Eigen::Vector3d(i + gamma * j, j, k);
                 if ((d + shift).norm() < reach) shifts.push_back(shift);
             }
     return shifts;

@@ -6,6 +6,9 @@
 //   * forces = -grad U and Hessian = d(grad U) by finite differences on overlapping, slightly non-convex
 //     particles (concave edges), across a periodic boundary; forces and torques sum to zero;
 //   * the virial pressure equals -dU/dV under homogeneous dilation (as for rough contacts);
+//   * through a Lees-Edwards sheared boundary: the sheared lattice vector leaves U unchanged, forces,
+//     Hessian and virial pressure as above; a particle touching two images of another in a small box has
+//     the energy of the same copies in open space;
 //   * a particle pressed on a flat mesh: the vertex-against-surface energy is the same wherever the contact
 //     point lies on the mesh (face interior, edge, vertex), while rough contacts corrugate (closed forms);
 //     a vertex pushed through a face is a NumericalError.
@@ -75,6 +78,24 @@ DpmSystem3d smooth_trio(Rng& rng, bool periodic, Eigen::VectorXd& x)
             v(k) += 0.04 * rng.uniform(-1, 1);
         s.add_particle(0, v, 0.9, ShapeParameters3d{}, x);
     }
+    return s;
+}
+
+// The trio turned by 90 degrees about z (chain along y, through the boundary y = 0) in a box sheared by the
+// Lees-Edwards strain gamma: particle 2 moved by gamma L in x so that the sheared image of particle 0 one box
+// up in y touches it (particles 1 and 2 then no longer touch).
+DpmSystem3d sheared_trio(Rng& rng, double gamma, Eigen::VectorXd& x)
+{
+    DpmSystem3d s = smooth_trio(rng, true, x);
+    const double L = *s.box;
+    for (Eigen::Index v = 0; v < x.size() / 3; ++v) {
+        const Eigen::Vector3d r = x.segment<3>(3 * v);
+        x.segment<3>(3 * v) = Eigen::Vector3d(L - r.y(), r.x(), r.z());
+    }
+    const Particle3d& last = s.particles[2];
+    for (int v = last.first; v < last.first + last.count; ++v)
+        x(3 * v) += gamma * L;
+    s.lees_edwards_strain = gamma;
     return s;
 }
 
@@ -200,6 +221,97 @@ TEST_CASE("3D smooth contacts: forces = -grad U, Hessian = d(grad U), forces and
             CHECK_CLOSE(torque.norm(), 0.0, (Tolerance{0, 1e4 * round_off * g_scale}));
         }
     }
+}
+
+TEST_CASE("3D smooth contacts through a Lees-Edwards sheared boundary: images, forces, virial pressure")
+{
+    Rng rng(23);
+    Eigen::VectorXd x;
+    const double gamma = 0.37;
+    const DpmSystem3d s = sheared_trio(rng, gamma, x);
+    const double L = *s.box;
+    const Eigen::Index dofs = x.size();
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(dofs);
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
+    const double energy = interaction_energy3d(s, x, &g, &h);
+    const std::vector<int> contacts = contact_counts3d(s, x);
+    CHECK(contacts[2] > 0); // particle 2 touches only the sheared image of particle 0
+    // A lattice vector of the sheared box, (gamma L, L, 0), maps particle 0 onto an image: U unchanged
+    // (round-off of coordinates ~L); the plain (0, L, 0) does not (the check is not vacuous).
+    const auto moved = [&](const Eigen::Vector3d& by) {
+        Eigen::VectorXd y = x;
+        for (int v = 0; v < s.particles[0].count; ++v)
+            y.segment<3>(3 * v) += by;
+        return interaction_energy3d(s, y, nullptr, nullptr);
+    };
+    CHECK_CLOSE(moved(Eigen::Vector3d(gamma * L, L, 0)), energy, (Tolerance{1e3 * round_off, 0}));
+    CHECK(std::abs(moved(Eigen::Vector3d(0, L, 0)) - energy) > 0.1 * energy);
+    const double step = 1e-6;
+    Eigen::VectorXd g_fd(dofs);
+    Eigen::MatrixXd h_fd(dofs, dofs);
+    for (Eigen::Index k = 0; k < dofs; ++k) {
+        Eigen::VectorXd xp = x, xm = x, gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
+        xp(k) += step;
+        xm(k) -= step;
+        g_fd(k) = (interaction_energy3d(s, xp, &gp, nullptr) - interaction_energy3d(s, xm, &gm, nullptr)) /
+                  (2 * step);
+        h_fd.col(k) = (gp - gm) / (2 * step);
+    }
+    // As in the unsheared test above.
+    const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff()),
+                 h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
+    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
+    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+    // Virial pressure = -dU/dV under homogeneous dilation at fixed strain (tolerance as in the next test).
+    const double V = std::pow(L, 3), e = 1e-5;
+    const double dV = (std::pow(1 + e, 3) - std::pow(1 - e, 3)) * V;
+    const auto dilated = [&](double f) {
+        DpmSystem3d d = s;
+        *d.box *= f;
+        return interaction_energy3d(d, f * x, nullptr, nullptr);
+    };
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+    interaction_energy3d(s, x, nullptr, nullptr, &moment);
+    CHECK_CLOSE(moment.trace() / (3 * V), -(dilated(1 + e) - dilated(1 - e)) / dV, (Tolerance{1e-7, 0}));
+}
+
+TEST_CASE("3D smooth contacts with two images of one particle in a small sheared box = open-space copies")
+{
+    // Two icosahedra (as in smooth_trio) 2.2 apart along y in a box of side 4.4 with Lees-Edwards strain
+    // 0.02: particle 1 touches particle 0 directly and, through the boundary y = 0, at its sheared image
+    // (-gamma L, -L, 0). The periodic energy must equal that of particle 0 with both copies of particle 1
+    // in open space (the copies are 4.4 apart: no contact between them).
+    Rng rng(31);
+    const double gamma = 0.02, L = 4.4;
+    DpmSystem3d s;
+    s.interaction = InteractionKind::smooth;
+    s.box = L;
+    s.lees_edwards_strain = gamma;
+    s.meshes.push_back(icosahedron_mesh());
+    Eigen::VectorXd x;
+    std::vector<Eigen::Matrix3Xd> shapes;
+    for (int m = 0; m < 2; ++m) {
+        Eigen::Matrix3Xd v = (random_rotation(rng) * s.meshes[0].vertices).colwise() +
+                             Eigen::Vector3d(2.2, 1.1 + 2.2 * m, 2.2);
+        for (Eigen::Index k = 0; k < v.size(); ++k)
+            v(k) += 0.04 * rng.uniform(-1, 1);
+        shapes.push_back(v);
+        s.add_particle(0, v, 0.9, ShapeParameters3d{}, x);
+    }
+    DpmSystem3d open = s;
+    open.box.reset();
+    open.lees_edwards_strain = 0;
+    Eigen::VectorXd y = x;
+    open.add_particle(0, shapes[1].colwise() - Eigen::Vector3d(gamma * L, L, 0), 0.9, ShapeParameters3d{}, y);
+    const double periodic = interaction_energy3d(s, x, nullptr, nullptr),
+                 copies = interaction_energy3d(open, y, nullptr, nullptr);
+    DpmSystem3d direct = open;
+    direct.particles.pop_back();
+    const double one_image = interaction_energy3d(direct, x, nullptr, nullptr);
+    CHECK(one_image > 0);
+    CHECK(copies - one_image > 0.1 * one_image); // the second image does touch
+    // Summation order differs (round-off of terms of size k_c sigma^2).
+    CHECK_CLOSE(periodic, copies, (Tolerance{1e3 * round_off, 0}));
 }
 
 TEST_CASE(
