@@ -14,6 +14,7 @@
 #include "dpm/shear_modulus3d_scene.hpp"
 #include "dpm/shear_modulus_scene.hpp"
 #include "dpm/shear_scene.hpp"
+#include "dpm/slide3d_scene.hpp"
 #include "dpm/slump_scene.hpp"
 
 namespace softgrain {
@@ -88,6 +89,12 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
                        "right wall removed; run-out, angle of repose, layers at the front",
                        dpm::slump_parameters(), dpm::run_slump_scene});
+    registry.add(
+        Scene{"dpm.slide3d",
+              "DPM sec. 9.3.2 in 3D: a rigid 3D particle slid over a flat slab at fixed height, "
+              "energy and F_x/F_z along the path for rough (vertex spheres) and smooth (vertex-face) "
+              "contacts",
+              dpm::slide3d_parameters(), dpm::run_slide3d});
 }
 
 } // namespace softgrain

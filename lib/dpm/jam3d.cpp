@@ -73,6 +73,7 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     Jam3dResult out;
     DpmSystem3d& s = out.system;
     s.kc = 1.0;
+    s.interaction = o.interaction;
     s.meshes.push_back(mesh_from_name(o.mesh));
     const TriangleMesh& unit = s.meshes[0]; // vertices on the unit sphere
 

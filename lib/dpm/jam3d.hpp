@@ -10,7 +10,8 @@
 // decision dpm-3d-jam-packing). Shape energy eq. (9.2) with Table 9.1's models in 3D (model_shape3d):
 // k_v v0^2 = k_c sigma^2 with v0 the small particles' volume (decision dpm-3d-jam-packing), k_a, k_b,
 // gamma given in units of k_v v0^(2/3), k_v v0^2, k_v v0^(5/3) as for single particles (Fig. 9.15a).
-// Pressure in k_v v0 (the paper's unit), eigenvalues in k_v v0^(4/3).
+// Pressure in k_v v0 (the paper's unit), eigenvalues in k_v v0^(4/3). Contacts rough or smooth (the virial
+// stress includes either).
 #pragma once
 
 #include "core/fire.hpp"
@@ -35,6 +36,8 @@ struct Jam3dOptions
     Stiffness3d stiffness;           // k_a, k_b, gamma (units above); k_v v0^2 = k_c sigma^2
     double start_fraction = 0.4;     // sum_mu (2 R_mu + sigma)^3 / L^3 at the random start
     std::uint64_t seed = 1;
+    // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp)
+    InteractionKind interaction = InteractionKind::rough;
 };
 
 // A relaxed packing at one target pressure.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 #include <utility>
 
 namespace softgrain::dpm {
@@ -130,6 +131,50 @@ TriangleMesh geodesic_icosahedron(int subdivisions)
             v.col(static_cast<Eigen::Index>(i)) = points[i];
         mesh = make_mesh(v, faces);
     }
+    return mesh;
+}
+
+TriangleMesh slab_mesh(int n, double spacing, double thickness)
+{
+    if (n < 2) throw InputError("slab grid n = " + std::to_string(n) + ": allowed n >= 2");
+    Eigen::Matrix3Xd vertices(3, 2 * n * n);
+    const auto index = [n](int layer, int i, int j) { return layer * n * n + j * n + i; };
+    const double half = 0.5 * (n - 1) * spacing;
+    for (int layer = 0; layer < 2; ++layer)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                vertices.col(index(layer, i, j)) << i * spacing - half, j * spacing - half,
+                    (layer == 0 ? 0.5 : -0.5) * thickness;
+    std::vector<std::array<int, 3>> faces;
+    const auto quad = [&faces](int a, int b, int c, int d) { // a-b-c-d around, split along a-c
+        faces.push_back({a, b, c});
+        faces.push_back({a, c, d});
+    };
+    for (int layer = 0; layer < 2; ++layer)
+        for (int j = 0; j + 1 < n; ++j)
+            for (int i = 0; i + 1 < n; ++i)
+                quad(index(layer, i, j), index(layer, i + 1, j), index(layer, i + 1, j + 1),
+                     index(layer, i, j + 1));
+    // The rim of the grid once around, then one side square per rim step.
+    std::vector<std::pair<int, int>> rim;
+    for (int i = 0; i + 1 < n; ++i)
+        rim.push_back({i, 0});
+    for (int j = 0; j + 1 < n; ++j)
+        rim.push_back({n - 1, j});
+    for (int i = n - 1; i > 0; --i)
+        rim.push_back({i, n - 1});
+    for (int j = n - 1; j > 0; --j)
+        rim.push_back({0, j});
+    for (std::size_t k = 0; k < rim.size(); ++k) {
+        const auto [i0, j0] = rim[k];
+        const auto [i1, j1] = rim[(k + 1) % rim.size()];
+        quad(index(0, i0, j0), index(0, i1, j1), index(1, i1, j1), index(1, i0, j0));
+    }
+    TriangleMesh mesh; // not make_mesh: the vertices stay where they are
+    mesh.vertices = vertices;
+    mesh.faces = faces;
+    orient_outward(mesh); // convex about the origin
+    build_edges(mesh);
     return mesh;
 }
 

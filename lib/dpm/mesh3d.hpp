@@ -44,6 +44,12 @@ TriangleMesh icosahedron_mesh();
 // The icosahedron subdivided `subdivisions` times (4 triangles per triangle) and projected to the sphere.
 TriangleMesh geodesic_icosahedron(int subdivisions);
 
+// A flat closed box (test and figure target for contacts on a plane): the top face z = thickness/2 and
+// the bottom face z = -thickness/2 are square grids of n x n vertices `spacing` apart, centred on the z
+// axis, each grid square split along its (+x, +y) diagonal; the four sides are strips of one row of
+// squares between the top and bottom rims. Not on the unit sphere. n >= 2.
+TriangleMesh slab_mesh(int n, double spacing, double thickness);
+
 // "tetrahedron" | "octahedron" | "icosahedron" | "geodesic42" | "geodesic162" | "geodesic642" (the mesh
 // choice of dpm.shape3d); throws InputError otherwise.
 TriangleMesh mesh_from_name(const std::string& name);

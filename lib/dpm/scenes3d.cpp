@@ -106,6 +106,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     o.stiffness.kb = p.real("kb");
     o.stiffness.gamma = p.real("gamma");
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    o.interaction = interaction_from_name(p.choice("contact"));
     context.record_seed(o.seed);
     Jam3dResult j = jam3d(o);
     context.count_steps(j.fire_iterations);
@@ -131,8 +132,8 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
         quartic += quartic_energy_change(total_energy3d(j.system, moved, nullptr, nullptr) - u0,
                                          solver.eigenvalues()(k), dr, 3.0);
     }
-    // Rattlers: particles without a vertex contact; each keeps the zero modes of a free particle (6 rigid
-    // motions; a floppy one N + 3, Fig. 9.15a).
+    // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
+    // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
     const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
     const int free_modes = o.model == ShapeModel::floppy ? j.system.meshes[0].vertex_count() + 3 : 6;
@@ -224,6 +225,11 @@ std::vector<ParameterSpec> modes3d_parameters()
             .positive(),
         ParameterSpec::real("size_ratio", 1.4, "1", "packing: diameter ratio of large to small particles")
             .at_least(1.0),
+        ParameterSpec::choice("contact", "rough", {"rough", "smooth"},
+                              "packing: contacts between particles: rough = vertex spheres of diameter sigma "
+                              "(eqs. 9.3-9.4), smooth = each vertex sphere against the faces of the other "
+                              "particle's mesh (sphero-polyhedra, Fig. 9.6d; decision "
+                              "dpm-3d-smooth-inclusion-exclusion)"),
         ParameterSpec::real(
             "soft_threshold", 1e-4, "k_v v0^(4/3)",
             "packing: a non-zero mode below this counts as soft (low-frequency), summary soft_modes")

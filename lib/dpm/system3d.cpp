@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/neighbour_list.hpp"
 #include "dpm/interactions.hpp"
+#include "dpm/interactions3d.hpp"
 #include "dpm/scale_packing.hpp"
 #include "dpm/system.hpp"
 
@@ -89,6 +90,9 @@ void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Cont
 double interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                             Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial)
 {
+    if (s.interaction == InteractionKind::none) return 0;
+    if (s.interaction == InteractionKind::smooth)
+        return smooth_interaction_energy3d(s, x, gradient, hessian, virial);
     double energy = 0;
     for_each_contact(s, x, [&](int i, int j, double sigma, const Eigen::Vector3d& rij) {
         const std::array<int, 2> pair{i, j};
@@ -101,6 +105,7 @@ double interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eige
 
 std::vector<int> contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
 {
+    if (s.interaction == InteractionKind::smooth) return smooth_contact_counts3d(s, x);
     std::vector<int> owner(s.vertex_count());
     for (std::size_t m = 0; m < s.particles.size(); ++m)
         std::fill(owner.begin() + s.particles[m].first,

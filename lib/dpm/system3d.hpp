@@ -5,6 +5,7 @@
 //   U_int = sum_{mu < beta} sum_{i in mu, j in beta} k_c/2 (sigma_mb - r_ij)^2 Theta(sigma_mb - r_ij),
 //   sigma_mb = (sigma_mu + sigma_beta)/2,
 //
+// or, with interaction = smooth, through the vertex-face repulsion of sphero-polyhedra (interactions3d.hpp),
 // in open space or a periodic cubic box of side L, optionally sheared (Lees-Edwards). r_ij is the
 // minimum-image distance of each vertex pair (decision dpm-3d-vertex-image): exact for L > 2 max sigma (1 +
 // |gamma|), whatever the size of the particles.
@@ -18,6 +19,7 @@
 
 #include "dpm/mesh3d.hpp"
 #include "dpm/shape_energy3d.hpp"
+#include "dpm/system.hpp"
 
 #include <optional>
 #include <vector>
@@ -42,6 +44,8 @@ struct DpmSystem3d
     // Lees-Edwards shear strain gamma of the box (sec. 9.4.3, x sheared along y): the images one box up in y
     // are shifted by gamma L in x (lees_edwards_image, system.hpp). 0: the plain periodic cube.
     double lees_edwards_strain = 0;
+    // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
+    InteractionKind interaction = InteractionKind::rough;
 
     int vertex_count() const
     {
@@ -56,9 +60,9 @@ struct DpmSystem3d
     Eigen::Matrix3Xd vertices(const Particle3d& p, const Eigen::VectorXd& x) const;
 };
 
-// Rough interaction energy (the formula above); adds its gradient and Hessian when given. `virial`, when
-// given, accumulates the force moment sum r_a F_b of every contact at its minimum-image coordinates (the
-// pair part of the 3D analogue of eq. 9.26).
+// Interaction energy (rough: the formula above; smooth: interactions3d.hpp); adds its gradient and
+// Hessian when given. `virial`, when given, accumulates the force moment sum r_a F_b of every contact at
+// its minimum-image coordinates (the pair part of the 3D analogue of eq. 9.26).
 double interaction_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                             Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial = nullptr);
 
@@ -88,7 +92,8 @@ void scale_packing3d(DpmSystem3d& system, Eigen::VectorXd& x, double f);
 // dpm-3d-jam-packing-fraction: the vertex spheres' caps outside the mesh are not counted).
 double packing_fraction3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
-// Number of vertex contacts (r_ij < sigma_mb) of each particle.
+// Number of vertex contacts (r_ij < sigma_mb) of each particle; smooth: vertex-surface contacts
+// (smooth_contact_counts3d).
 std::vector<int> contact_counts3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
 } // namespace softgrain::dpm
