@@ -28,6 +28,7 @@ Jam3dOptions jam3d_options(const Parameters& p)
     o.pressure_max = p.real("pressure_max");
     o.pressures = static_cast<int>(p.integer("pressures"));
     o.A0_floppy = p.real("A0_floppy");
+    o.interaction = interaction_from_name(p.choice("contact"));
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     if (o.pressure_max <= o.pressure_onset)
         throw InputError("pressure_max = " + std::to_string(o.pressure_max) +
@@ -101,6 +102,11 @@ std::vector<ParameterSpec> shear_modulus3d_parameters()
                             "floppy: preferred shape parameter A0^3D, above the mesh's own (icosahedron "
                             "1.098; 1.12 as Fig. 9.15b)")
             .at_least(1.0),
+        ParameterSpec::choice(
+            "contact", "rough", {"rough", "smooth"},
+            "contacts between particles: rough = vertex spheres of diameter sigma (eqs. "
+            "9.3-9.4), smooth = each vertex sphere against the faces of the other particle's "
+            "mesh (decision dpm-3d-smooth-inclusion-exclusion)"),
         ParameterSpec::real("strain_step", 5e-9, "1", "Lees-Edwards simple shear step dgamma (sec. 9.4.3)")
             .positive(),
         ParameterSpec::integer("strain_steps", 2, "1", "shear steps per pressure").at_least(1),
