@@ -1,6 +1,7 @@
 #include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 
 namespace softgrain::dpm {
 
@@ -66,11 +67,25 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
                          x, force_tolerance, max_steps);
 }
 
+double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& mode, double amplitude)
+{
+    const Eigen::VectorXd moved = x + amplitude * mode;
+    return energy(moved, nullptr, nullptr) - energy(x, nullptr, nullptr);
+}
+
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                            double amplitude)
 {
-    const Eigen::VectorXd moved = x + amplitude * mode;
-    return total_energy(system, moved, nullptr, nullptr) - total_energy(system, x, nullptr, nullptr);
+    return energy_change_along([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                         Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
+                               x, mode, amplitude);
+}
+
+double local_exponent(double du1, double du2, double dr1, double dr2, double floor)
+{
+    if (!(du1 > floor && du2 > floor)) return std::nan("");
+    return std::log(du2 / du1) / std::log(dr2 / dr1);
 }
 
 double participation_ratio(const Eigen::VectorXd& mode)

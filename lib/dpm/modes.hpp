@@ -68,8 +68,14 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
 // The same on the total energy of a 2D system.
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
 
-// U(x + amplitude e) - U(x).
+// U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
+double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& mode, double amplitude);
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                            double amplitude);
+
+// Local exponent d ln dU / d ln dr between two amplitudes (Figs. 9.14c, 9.15c); NaN where dU is not above
+// `floor` (round-off level).
+double local_exponent(double du1, double du2, double dr1, double dr2, double floor);
 
 } // namespace softgrain::dpm
