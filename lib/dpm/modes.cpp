@@ -40,12 +40,18 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps)
 {
+    const auto largest_force = [&energy](const Eigen::VectorXd& y) {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(y.size());
+        energy(y, &f, nullptr);
+        return f.cwiseAbs().maxCoeff();
+    };
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
     for (int step = 0; step < max_steps; ++step) {
         g.setZero();
         Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
         energy(x, &g, &m);
-        if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
+        const double force = g.cwiseAbs().maxCoeff();
+        if (force < force_tolerance) break;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
         const Eigen::VectorXd& lambda = solver.eigenvalues();
         const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
@@ -53,11 +59,13 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
         for (Eigen::Index k = 0; k < lambda.size(); ++k)
             if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
-        x -= solver.eigenvectors() * step_in_modes;
+        // A step that raises the largest force left the quadratic basin (a contact opened or closed, or a
+        // soft mode with lambda just above the cut): keep the state reached and stop.
+        const Eigen::VectorXd trial = x - solver.eigenvectors() * step_in_modes;
+        if (!(largest_force(trial) < force)) break;
+        x = trial;
     }
-    g.setZero();
-    energy(x, &g, nullptr);
-    return g.cwiseAbs().maxCoeff();
+    return largest_force(x);
 }
 
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)

@@ -7,6 +7,7 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
 namespace {
@@ -90,4 +91,25 @@ TEST_CASE("Delta U along a mode: ~ lambda dr^2/2 for quadratic modes, ~ dr^4 alo
             if (du > 1e-18) CHECK_CLOSE(std::log2(du2 / du), 4.0, (Tolerance{0, 0.01})); // O(dr^2) correction
         }
     }
+}
+
+TEST_CASE("Newton polish: converges quadratically inside the basin, refuses a step that raises the force")
+{
+    // U = sqrt(1 + x^2): convex, minimum at 0, force -x/sqrt(1 + x^2), Newton map x -> -x^3. From x = 0.5 the
+    // iterates 0.5, -0.125, 2e-3, -7.5e-9, 4e-25 reach a force below 1e-14 in four steps (x -> -x^3 up to
+    // round-off); from x = 2 the full step goes to -8 with a larger force, so the polish keeps x = 2.
+    const EnergyWithDerivatives energy = [](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                            Eigen::MatrixXd* h) {
+        const double r = std::sqrt(1 + y(0) * y(0));
+        if (g) (*g)(0) += y(0) / r;
+        if (h) (*h)(0, 0) += 1 / (r * r * r);
+        return r;
+    };
+    Eigen::VectorXd x(1);
+    x << 0.5;
+    CHECK_CLOSE(polish_newton(energy, x, 1e-14, 30), 0.0, (Tolerance{0, 1e-14}));
+    CHECK_CLOSE(std::abs(x(0)), 0.0, (Tolerance{0, 1e-14}));
+    x << 2.0;
+    CHECK_CLOSE(polish_newton(energy, x, 1e-14, 30), 2.0 / std::sqrt(5.0), (Tolerance{round_off, 0}));
+    CHECK_CLOSE(x(0), 2.0, (Tolerance{0, 0}));
 }
