@@ -59,11 +59,15 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
         for (Eigen::Index k = 0; k < lambda.size(); ++k)
             if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
-        // A step that raises the largest force left the quadratic basin (a contact opened or closed, or a
-        // soft mode with lambda just above the cut): keep the state reached and stop.
-        const Eigen::VectorXd trial = x - solver.eigenvectors() * step_in_modes;
-        if (!(largest_force(trial) < force)) break;
-        x = trial;
+        // A full step that raises the largest force has left the quadratic basin (a contact opened or
+        // closed, or a soft mode with lambda just above the cut): halve it until the force falls; stop
+        // where 20 halvings do not help.
+        const Eigen::VectorXd newton_step = solver.eigenvectors() * step_in_modes;
+        double fraction = 1;
+        while (fraction > 1e-6 && !(largest_force(x - fraction * newton_step) < force))
+            fraction /= 2;
+        if (fraction <= 1e-6) break;
+        x -= fraction * newton_step;
     }
     return largest_force(x);
 }
