@@ -46,6 +46,7 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         return f.cwiseAbs().maxCoeff();
     };
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    const double start_force = largest_force(x);
     for (int step = 0; step < max_steps; ++step) {
         g.setZero();
         Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
@@ -59,12 +60,14 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
         for (Eigen::Index k = 0; k < lambda.size(); ++k)
             if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
-        // A full step that raises the largest force has left the quadratic basin (a contact opened or
-        // closed, or a soft mode with lambda just above the cut): halve it until the force falls; stop
-        // where 20 halvings do not help.
+        // A full step to a force above the FIRE-relaxed start has left the quadratic basin (a contact
+        // opened or closed, or a soft mode with lambda just above the cut): halve it until the force is
+        // below the start's again; stop where 20 halvings do not help. Rises below the start's force are
+        // accepted: on a manifold of minima (floppy packings) the largest force can rise for a step before
+        // it falls quadratically.
         const Eigen::VectorXd newton_step = solver.eigenvectors() * step_in_modes;
         double fraction = 1;
-        while (fraction > 1e-6 && !(largest_force(x - fraction * newton_step) < force))
+        while (fraction > 1e-6 && !(largest_force(x - fraction * newton_step) < start_force))
             fraction /= 2;
         if (fraction <= 1e-6) break;
         x -= fraction * newton_step;

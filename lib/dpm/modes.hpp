@@ -63,9 +63,9 @@ using EnergyWithDerivatives =
 // Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until the
 // largest force component is below force_tolerance or `max_steps` is reached; returns that force.
 // Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles). A step
-// that does not lower the largest force is halved until it does (damped Newton; the polish ends where 20
-// halvings do not help, and the returned force says how far it got): a full Newton step outside the
-// quadratic basin can throw a floppy packing far from its minimum.
+// to a largest force above that of the start is halved until it is below (damped Newton; the polish ends
+// where 20 halvings do not help, and the returned force says how far it got): a full Newton step outside
+// the quadratic basin can throw a floppy packing far from its minimum.
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps);
 // The same on the total energy of a 2D system.
