@@ -14,6 +14,7 @@ models = "floppy shell surface-tension"
 # The pressure reached by each run: column 2 (pressure_reached) of the reduced table, in run order.
 pressures = system("grep -v '^#' ".datafile." | tail -n +2 | awk '{print $2}'")
 unset key
+set xtics 100
 set xrange [(word(pressures, 1) + 0) / 3.0:(word(pressures, per) + 0) * 3.0]
 # Runs: model outer, pressure inner (sweep order); each file holds one packing's spectrum.
 do for [m=1:3] {
