@@ -8,7 +8,8 @@
 //   AutoDiffScalar<Matrix<double, N, 1>>       -> value and gradient (N = K Dim),
 //   AutoDiffScalar<Matrix<that, N, 1>>         -> value, gradient and Hessian.
 // Every DPM energy (2D shape terms, rough and smooth contacts; 3D faces and dihedrals later) is such a
-// term, so no derivative is written by hand. The sizes are fixed at compile time: no allocation.
+// term, so no Hessian is written by hand (the 3D shape terms add analytic gradients for FIRE, checked
+// against these: shape_energy3d.hpp). The sizes are fixed at compile time: no allocation.
 //
 // Rule for writing a term (Eigen's AutoDiff builds expression templates that may refer to temporaries):
 // declare the return type as the Scalar and every intermediate as a Scalar, never `auto`. The functions
@@ -93,16 +94,23 @@ Eigen::Matrix<double, K * Dim, 1> gather(const Eigen::VectorXd& x, const std::ar
     return local;
 }
 
+// Adds weight * a local gradient (point k at rows Dim k ...) into the global gradient.
+template <int Dim, int K>
+void scatter_gradient(const Eigen::Matrix<double, K * Dim, 1>& local, const std::array<int, K>& points,
+                      double weight, Eigen::VectorXd& gradient)
+{
+    for (int a = 0; a < K; ++a)
+        gradient.template segment<Dim>(Dim * points[a]) += weight * local.template segment<Dim>(Dim * a);
+}
+
 // Adds weight * (gradient, Hessian) of a local result into the global arrays (either may be null).
 template <int Dim, int K>
 void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& points, double weight,
              Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
 {
+    if (gradient) scatter_gradient<Dim, K>(d.gradient, points, weight, *gradient);
+    if (!hessian) return;
     for (int a = 0; a < K; ++a) {
-        if (gradient)
-            gradient->template segment<Dim>(Dim * points[a]) +=
-                weight * d.gradient.template segment<Dim>(Dim * a);
-        if (!hessian) continue;
         for (int b = 0; b < K; ++b)
             hessian->template block<Dim, Dim>(Dim * points[a], Dim * points[b]) +=
                 weight * d.hessian.template block<Dim, Dim>(Dim * a, Dim * b);

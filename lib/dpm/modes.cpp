@@ -1,6 +1,7 @@
 #include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 
 namespace softgrain::dpm {
 
@@ -39,12 +40,19 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps)
 {
+    const auto largest_force = [&energy](const Eigen::VectorXd& y) {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(y.size());
+        energy(y, &f, nullptr);
+        return f.cwiseAbs().maxCoeff();
+    };
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    const double start_force = largest_force(x);
     for (int step = 0; step < max_steps; ++step) {
         g.setZero();
         Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
         energy(x, &g, &m);
-        if (g.cwiseAbs().maxCoeff() < force_tolerance) break;
+        const double force = g.cwiseAbs().maxCoeff();
+        if (force < force_tolerance) break;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
         const Eigen::VectorXd& lambda = solver.eigenvalues();
         const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
@@ -52,11 +60,19 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
         for (Eigen::Index k = 0; k < lambda.size(); ++k)
             if (lambda(k) > cut) step_in_modes(k) = projected(k) / lambda(k);
-        x -= solver.eigenvectors() * step_in_modes;
+        // A full step to a force above the FIRE-relaxed start has left the quadratic basin (a contact
+        // opened or closed, or a soft mode with lambda just above the cut): halve it until the force is
+        // below the start's again; stop where 20 halvings do not help. Rises below the start's force are
+        // accepted: on a manifold of minima (floppy packings) the largest force can rise for a step before
+        // it falls quadratically.
+        const Eigen::VectorXd newton_step = solver.eigenvectors() * step_in_modes;
+        double fraction = 1;
+        while (fraction > 1e-6 && !(largest_force(x - fraction * newton_step) < start_force))
+            fraction /= 2;
+        if (fraction <= 1e-6) break;
+        x -= fraction * newton_step;
     }
-    g.setZero();
-    energy(x, &g, nullptr);
-    return g.cwiseAbs().maxCoeff();
+    return largest_force(x);
 }
 
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)
@@ -66,11 +82,25 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
                          x, force_tolerance, max_steps);
 }
 
+double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& mode, double amplitude)
+{
+    const Eigen::VectorXd moved = x + amplitude * mode;
+    return energy(moved, nullptr, nullptr) - energy(x, nullptr, nullptr);
+}
+
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                            double amplitude)
 {
-    const Eigen::VectorXd moved = x + amplitude * mode;
-    return total_energy(system, moved, nullptr, nullptr) - total_energy(system, x, nullptr, nullptr);
+    return energy_change_along([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                         Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
+                               x, mode, amplitude);
+}
+
+double local_exponent(double du1, double du2, double dr1, double dr2, double floor)
+{
+    if (!(du1 > floor && du2 > floor)) return std::nan("");
+    return std::log(du2 / du1) / std::log(dr2 / dr1);
 }
 
 double participation_ratio(const Eigen::VectorXd& mode)

@@ -62,14 +62,23 @@ using EnergyWithDerivatives =
 
 // Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until the
 // largest force component is below force_tolerance or `max_steps` is reached; returns that force.
-// Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles).
+// Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles). A step
+// to a largest force above that of the start is halved until it is below (damped Newton; the polish ends
+// where 20 halvings do not help, and the returned force says how far it got): a full Newton step outside
+// the quadratic basin can throw a floppy packing far from its minimum.
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps);
 // The same on the total energy of a 2D system.
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
 
-// U(x + amplitude e) - U(x).
+// U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
+double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& mode, double amplitude);
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                            double amplitude);
+
+// Local exponent d ln dU / d ln dr between two amplitudes (Figs. 9.14c, 9.15c); NaN where dU is not above
+// `floor` (round-off level).
+double local_exponent(double du1, double du2, double dr1, double dr2, double floor);
 
 } // namespace softgrain::dpm

@@ -17,22 +17,6 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Local exponent d ln dU / d ln dr between two amplitudes; NaN where dU is at round-off level.
-double local_exponent(double du1, double du2, double dr1, double dr2, double floor)
-{
-    if (!(du1 > floor && du2 > floor)) return std::nan("");
-    return std::log(du2 / du1) / std::log(dr2 / dr1);
-}
-
-nlohmann::json median_or_null(std::vector<double> values)
-{
-    values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
-                 values.end());
-    if (values.empty()) return nullptr;
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
 // Fig. 9.5(c, d): every non-zero mode of a packing of deformable particles split into rigid translations,
 // rotations and deformations (decompose_mode), classified quartic or quadratic by Delta U (is_quartic_mode);
 // the lowest-frequency quartic mode and the highest-frequency mode are written as fields over the packing.
@@ -109,6 +93,15 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
 }
 
 } // namespace
+
+nlohmann::json median_or_null(std::vector<double> values)
+{
+    values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
+                 values.end());
+    if (values.empty()) return nullptr;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
 
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
 // keys common to single particles and packings. Returns the number of zero modes.

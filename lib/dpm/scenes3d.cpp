@@ -9,10 +9,13 @@
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
 #include "dpm/modes.hpp"
+#include "dpm/modes_scene.hpp"
 #include "dpm/single_particle3d.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -82,7 +85,51 @@ int write_spectrum(const Eigen::VectorXd& lambda, double threshold, RunContext& 
     s["lambda_smallest_nonzero"] =
         zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
     s["lambda_max"] = lambda(lambda.size() - 1);
+    // The median non-zero eigenvalue: a quadratic (shape or contact) mode whenever the soft band holds
+    // fewer than half of the modes (Fig. 9.15d-f).
+    s["lambda_median_nonzero"] = zero < lambda.size()
+                                     ? nlohmann::json(lambda(zero + (lambda.size() - zero) / 2))
+                                     : nlohmann::json(nullptr);
     return zero;
+}
+
+// Fig. 9.15(c): Delta U = U(x + dr e_k) - U(x) along every unit eigenvector e_k of the packing at
+// dr = 10^(-3 + s/8) v0^(1/3), s = 0 ... 28 (1e-3 to 3.2), in the table mode_energy.dat; summary: the median
+// local exponent d ln dU/d ln dr at dr = 1e-3 over the non-zero modes (quadratic: 2) and between
+// dr = 0.1 and 0.2 over the soft modes, lambda~ below `soft` (quartic at large dr: 4). The soft modes cross
+// from quadratic to quartic at dr ~ sqrt(lambda~) <~ 1e-2 (U = lambda dr^2/2 + c dr^4 with c ~ 1); the
+// window lies a decade beyond (decision dpm-3d-quartic-window).
+void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult& j,
+                         const Eigen::VectorXd& lambda, const Eigen::MatrixXd& modes, int zero, double soft,
+                         const std::vector<bool>& quartic, RunContext& context)
+{
+    auto& table = context.table(
+        "mode_energy.dat", {{"k", "1", "mode index"},
+                            {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k"},
+                            {"zero_mode", "1", "1 if lambda~_k < zero_threshold"},
+                            {"quartic", "1", "1 if Delta U(0.1 sigma) > 3 lambda dr^2/2 (quartic_modes)"},
+                            {"dr", "v0^(1/3)", "amplitude Delta r along the unit eigenvector"},
+                            {"dU", "k_v v0^2", "Delta U = U(x + dr e_k) - U(x)"}});
+    const double u0 = energy(j.x, nullptr, nullptr) / j.energy_unit;
+    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(u0));
+    const auto change = [&](Eigen::Index k, double dr) {
+        return energy_change_along(energy, j.x, modes.col(k), dr * j.length_unit) / j.energy_unit;
+    };
+    std::vector<double> small_exponents, large_exponents;
+    for (Eigen::Index k = 0; k < lambda.size(); ++k) {
+        for (int s = 0; s <= 28; ++s) {
+            const double dr = std::pow(10.0, -3.0 + s / 8.0);
+            table.row(
+                {double(k + 1), lambda(k), k < zero ? 1.0 : 0.0, quartic[k] ? 1.0 : 0.0, dr, change(k, dr)});
+        }
+        if (k < zero) continue;
+        small_exponents.push_back(local_exponent(change(k, 1e-3), change(k, 2e-3), 1e-3, 2e-3, floor));
+        if (lambda(k) < soft)
+            large_exponents.push_back(local_exponent(change(k, 0.1), change(k, 0.2), 0.1, 0.2, floor));
+    }
+    auto& s = context.summary();
+    s["quadratic_mode_exponent"] = median_or_null(small_exponents);
+    s["soft_mode_exponent_large"] = median_or_null(large_exponents);
 }
 
 // Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
@@ -125,25 +172,24 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
 
     // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
     // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
-    const double dr = 0.1, u0 = total_energy3d(j.system, j.x, nullptr, nullptr);
-    int quartic = 0;
-    for (Eigen::Index k = zero; k < lambda.size(); ++k) {
-        const Eigen::VectorXd moved = j.x + dr * solver.eigenvectors().col(k);
-        quartic += quartic_energy_change(total_energy3d(j.system, moved, nullptr, nullptr) - u0,
-                                         solver.eigenvalues()(k), dr, 3.0);
-    }
+    const auto& modes = solver.eigenvectors();
+    std::vector<bool> quartic(lambda.size(), false);
+    for (Eigen::Index k = zero; k < lambda.size(); ++k)
+        quartic[k] = quartic_energy_change(energy_change_along(energy, j.x, modes.col(k), 0.1),
+                                           solver.eigenvalues()(k), 0.1, 3.0);
+    const double soft = p.real("soft_threshold");
+    write_mode_energy3d(energy, j, lambda, modes, zero, soft, quartic, context);
     // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
     // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
     const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
     const int free_modes = o.model == ShapeModel::floppy ? j.system.meshes[0].vertex_count() + 3 : 6;
-    const double soft = p.real("soft_threshold");
     auto& s = context.summary();
     s["particles"] = o.particles;
     s["modes"] = lambda.size();
     s["rattlers"] = rattlers;
     s["zero_modes_without_rattlers"] = zero - free_modes * rattlers;
-    s["quartic_modes"] = quartic;
+    s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
     s["soft_modes"] =
         static_cast<int>((lambda.array() >= p.real("zero_threshold") && lambda.array() < soft).count());
     s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;

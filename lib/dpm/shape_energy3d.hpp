@@ -9,7 +9,8 @@
 // Units: lengths [L], k_v [E/L^6], k_a [E/L^4], k_b [E], gamma [E/L^2].
 //
 // Each term is written once as a local function of the coordinates of its points, templated on the
-// scalar; forces and the exact Hessian follow from local_derivatives.hpp (as in 2D, shape_energy.hpp).
+// scalar; the exact Hessian follows from local_derivatives.hpp (as in 2D, shape_energy.hpp), and so do the
+// forces when the Hessian is asked for too; forces alone (FIRE) use the analytic local gradients below.
 // The volume term is a penalty of a sum of local measures; its derivatives follow by the chain rule.
 #pragma once
 
@@ -62,6 +63,29 @@ Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
     const Scalar cosine = n1.dot(n2);
     return Scalar(atan2(sine, cosine));
 }
+
+// Analytic first derivatives of the three local measures above, for the gradient-only path (FIRE): the
+// AutoDiff gradient of the same measures costs several times more (decision dpm-3d-analytic-gradient);
+// the Hessian keeps AutoDiff. Verified against the AutoDiff gradients to round-off and against finite
+// differences (verification/dpm/shape_energy3d.cpp).
+//   grad face_volume  = (r1 x r2, r2 x r0, r0 x r1)/6;
+//   grad triangle_area: with the unit normal m = n/|n|, d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 -
+//   r0)/2,
+//     d a/d r0 = -(d a/d r1 + d a/d r2) (translation invariance); undefined for a degenerate triangle;
+//   grad dihedral_angle: the opposite points move theta only by turning their face about the edge,
+//     d theta/d c = -|e| n1/|n1|^2, d theta/d d = -|e| n2/|n2|^2 (minus: lifting c along its face's outward
+//     normal flattens a convex edge); the edge points carry the rest according to where c and d project on
+//     the edge, with t_c = (c - a) . e/|e|^2: d theta/d b = -(t_c d theta/d c + t_d d theta/d d),
+//     d theta/d a = -(d theta/d b + d theta/d c + d theta/d d); undefined for a degenerate face.
+template <int N>
+struct LocalGradient
+{
+    double value = 0;
+    Eigen::Matrix<double, N, 1> gradient;
+};
+LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x);
+LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x);
+LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x);
 
 // Parameters of eq. (9.2) for one particle: per-face rest areas and per-edge rest angles (in the order of
 // the mesh's faces and edges), since on a geodesic mesh they are not uniform (section 9.3.1).
@@ -119,7 +143,8 @@ struct SurfaceTensionEnergy
 
 // Shape energy eq. (9.2) of the particle with the mesh's connectivity whose vertex v is point first + v of
 // the flat array x (point p at x(3p) ... x(3p + 2)). Adds the gradient (= -forces) and the Hessian when
-// given; `terms` selects terms of eq. (9.2).
+// given (the gradient alone from the analytic local gradients, with the Hessian from AutoDiff); `terms`
+// selects terms of eq. (9.2).
 double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
                       int first, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
                       unsigned terms = all_shape_terms3d);

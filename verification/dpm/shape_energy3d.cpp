@@ -55,6 +55,14 @@ void check_derivatives(const ShapeParameters3d& s, const TriangleMesh& mesh, con
     // penalty k_v/2 (v - v0)^2 may be small after the cancellation in v - v0.
     CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, nullptr, nullptr, term), energy,
                 (Tolerance{10 * round_off, 100 * round_off}));
+    // The gradient alone comes from the analytic local gradients, the one beside the Hessian from AutoDiff:
+    // round-off of sums over the <= 6 faces or 12 hinges at a vertex (and, for the volume, of the product
+    // k_v (v - v0) grad v), so 1000 eps of the largest component.
+    Eigen::VectorXd g_analytic = Eigen::VectorXd::Zero(dofs);
+    CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, &g_analytic, nullptr, term), energy,
+                (Tolerance{10 * round_off, 100 * round_off}));
+    CHECK_CLOSE((g_analytic - g).cwiseAbs().maxCoeff(), 0.0,
+                (Tolerance{0, 1000 * round_off * std::max(1.0, g.cwiseAbs().maxCoeff())}));
     const double step = 1e-6;
     Eigen::VectorXd g_fd(dofs);
     Eigen::MatrixXd h_fd(dofs, dofs);
@@ -148,4 +156,44 @@ TEST_CASE("the undeformed mesh is a zero-energy state of its own rest shape [DPM
         CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, &g, nullptr), 0.0, (Tolerance{0, round_off}));
         CHECK_CLOSE(g.cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off}));
     }
+}
+
+TEST_CASE("analytic gradients of face volume, triangle area and dihedral angle = AutoDiff ones to round-off "
+          "[DPM eq. (9.2)]")
+{
+    // The same derivative in two roundings: the analytic formulas (shape_energy3d.hpp) and forward AutoDiff
+    // of the measures themselves. Each component is a short sum of products of O(1) coordinates, so they
+    // agree to a few eps times the measure's gradient scale (its largest component); 64 eps leaves room
+    // for the atan2 quotient of the dihedral angle, while a wrong sign or term is an O(1) relative error.
+    // The values are the same double code as the AutoDiff value part up to the order of operations that
+    // Eigen's AutoDiff products take: a few eps of the O(1) measure.
+    // Random triangles and hinges with bending angles over (-pi, pi), convex and concave.
+    Rng rng(90203);
+    const auto point = [&rng] {
+        return Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    };
+    const auto check = [](const auto& analytic, const auto& autodiff) {
+        const double scale = autodiff.gradient.cwiseAbs().maxCoeff();
+        CHECK_CLOSE(analytic.value, autodiff.value, (Tolerance{0, 4 * round_off}));
+        CHECK_CLOSE((analytic.gradient - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 64 * round_off * scale}));
+    };
+    const auto volume = [](const auto& y) { return face_volume(y); };
+    const auto area = [](const auto& y) { return triangle_area(y); };
+    const auto angle = [](const auto& y) { return dihedral_angle(y); };
+    double smallest_angle = 0, largest_angle = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        Eigen::Matrix<double, 9, 1> face;
+        face << point(), point(), point();
+        check(face_volume_gradient(face), local_gradient<9>(volume, face));
+        check(triangle_area_gradient(face), local_gradient<9>(area, face));
+        Eigen::Matrix<double, 12, 1> hinge;
+        hinge << point(), point(), point(), point();
+        check(dihedral_angle_gradient(hinge), local_gradient<12>(angle, hinge));
+        smallest_angle = std::min(smallest_angle, dihedral_angle(hinge));
+        largest_angle = std::max(largest_angle, dihedral_angle(hinge));
+    }
+    // Both signs of the angle, close to +-pi, were met (the samples cover the branch of atan2).
+    CHECK(smallest_angle < -3.0);
+    CHECK(largest_angle > 3.0);
 }

@@ -91,3 +91,24 @@ TEST_CASE("Delta U along a mode: ~ lambda dr^2/2 for quadratic modes, ~ dr^4 alo
         }
     }
 }
+
+TEST_CASE("Newton polish: quadratic inside the basin, damped where a full step would raise the force")
+{
+    // U = sqrt(1 + x^2): convex, minimum at 0, force -x/sqrt(1 + x^2), Newton map x -> -x^3. From x = 0.5 the
+    // iterates 0.5, -0.125, 2e-3, -7.5e-9, 4e-25 reach a force below 1e-14 in four full steps. From x = 2
+    // the full steps diverge (-8, 512, ...); the damped step (a quarter: x = -0.5) enters the basin.
+    const EnergyWithDerivatives energy = [](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                                            Eigen::MatrixXd* h) {
+        const double r = std::sqrt(1 + y(0) * y(0));
+        if (g) (*g)(0) += y(0) / r;
+        if (h) (*h)(0, 0) += 1 / (r * r * r);
+        return r;
+    };
+    for (double start : {0.5, 2.0}) {
+        CAPTURE(start);
+        Eigen::VectorXd x(1);
+        x << start;
+        CHECK_CLOSE(polish_newton(energy, x, 1e-14, 30), 0.0, (Tolerance{0, 1e-14}));
+        CHECK_CLOSE(x(0), 0.0, (Tolerance{0, 1e-14}));
+    }
+}
