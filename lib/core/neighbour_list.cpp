@@ -100,6 +100,7 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
     const double reach_squared = reach * reach;
     std::vector<int> visited;
     for (Eigen::Index i = 0; i < n; ++i) {
+        const auto first_of_i = static_cast<std::ptrdiff_t>(pairs_.size());
         visited.clear();
         for (const auto& o : offsets) {
             Eigen::Matrix<int, Dim, 1> c = cell_index[i] + o;
@@ -122,8 +123,9 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
                     pairs_.emplace_back(static_cast<int>(i), j);
             }
         }
+        // Deterministic order, independent of binning: the pairs come by i, each i's sorted by j.
+        std::sort(pairs_.begin() + first_of_i, pairs_.end());
     }
-    std::sort(pairs_.begin(), pairs_.end()); // deterministic order, independent of binning
     reference_positions_ = positions;
     ++builds_;
 }

@@ -215,32 +215,46 @@ void ShellModel::update_contact_candidates()
         if (local < s.elements()) add(i, j, next(s, local));
         if (s.closed || local > 0) add(i, prev(s, local), j);
     };
+    // Each vertex's list neighbours (compressed rows), so that the candidates are made vertex by vertex and
+    // only each vertex's few need sorting by element: the order (vertex, a) of the friction carry-over and
+    // of the gather.
+    const int n = vertices();
+    std::vector<int> row(n + 1, 0);
     for (const auto& [i, j] : neighbours_->pairs()) {
-        const Shell &si = shells_[shell_of(i)], &sj = shells_[shell_of(j)];
-        if (shell_of(i) == shell_of(j) || (si.rigid && sj.rigid)) continue;
-        if (!sj.rigid) add_adjacent_elements(i, j);
-        if (!si.rigid) add_adjacent_elements(j, i);
+        ++row[i + 1];
+        ++row[j + 1];
+    }
+    std::partial_sum(row.begin(), row.end(), row.begin());
+    std::vector<int> neighbour(row.back()), fill(row.begin(), row.end() - 1);
+    for (const auto& [i, j] : neighbours_->pairs()) {
+        neighbour[fill[i]++] = j;
+        neighbour[fill[j]++] = i;
     }
     // Walls have few, long elements that a vertex list does not see: each free vertex is paired with the wall
     // elements within reach + skin (neither moves more than skin/2 before the next rebuild).
     const double wall_reach = reach + neighbours_->skin();
-    for (const Shell& wall : shells_) {
-        if (!wall.rigid) continue;
-        for (const Shell& s : shells_)
-            if (!s.rigid)
-                for (int i = s.first; i < s.first + s.count; ++i)
-                    for (int k = 0; k < wall.elements(); ++k) {
-                        const int a = wall.first + k, b = next(wall, k);
-                        if (point_segment_proximity(vertex(i), vertex(a), vertex(b)).distance < wall_reach)
-                            add(i, a, b);
-                    }
+    std::vector<const Shell*> walls;
+    for (const Shell& s : shells_)
+        if (s.rigid) walls.push_back(&s);
+    const auto by_element = [](const Candidate& u, const Candidate& w) { return u.a < w.a; };
+    const auto same_element = [](const Candidate& u, const Candidate& w) { return u.a == w.a; };
+    for (int i = 0; i < n; ++i) {
+        const auto begin = static_cast<std::ptrdiff_t>(fresh.size());
+        for (int k = row[i]; k < row[i + 1]; ++k) {
+            const int j = neighbour[k];
+            if (shell_of(i) != shell_of(j) && !shells_[shell_of(j)].rigid) add_adjacent_elements(i, j);
+        }
+        if (!shells_[shell_of(i)].rigid)
+            for (const Shell* wall : walls)
+                for (int k = 0; k < wall->elements(); ++k) {
+                    const int a = wall->first + k, b = next(*wall, k);
+                    if (point_segment_proximity(vertex(i), vertex(a), vertex(b)).distance < wall_reach)
+                        add(i, a, b);
+                }
+        std::sort(fresh.begin() + begin, fresh.end(), by_element);
+        fresh.erase(std::unique(fresh.begin() + begin, fresh.end(), same_element), fresh.end());
     }
     const auto key = [](const Candidate& c) { return std::make_pair(c.vertex, c.a); };
-    std::sort(fresh.begin(), fresh.end(),
-              [&](const Candidate& u, const Candidate& w) { return key(u) < key(w); });
-    fresh.erase(std::unique(fresh.begin(), fresh.end(),
-                            [&](const Candidate& u, const Candidate& w) { return key(u) == key(w); }),
-                fresh.end());
     // Both lists are sorted: carry the friction history of pairs that stay candidates.
     auto old = candidates_.begin();
     for (Candidate& c : fresh) {
