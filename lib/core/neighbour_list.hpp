@@ -29,6 +29,8 @@ class NeighbourList
     // (always true before the first build or for a point the list has not seen). `update` rebuilds exactly
     // when this holds for some point; a caller that already visits every point can test it there, in
     // parallel, and skip `update` otherwise.
+    // Builds the list now (for a caller that knows it is stale: no second check of every point).
+    void build(const Points<Dim>& positions);
     bool moved_beyond_half_skin(Eigen::Index i, const Vec<Dim>& x) const
     {
         if (builds_ == 0 || i >= reference_positions_.cols()) return true;
@@ -66,7 +68,6 @@ class NeighbourList
     }
 
   private:
-    void build(const Points<Dim>& positions);
     bool needs_rebuild(const Points<Dim>& positions) const;
 
     double cutoff_, skin_;

@@ -197,12 +197,12 @@ void ShellModel::update_contact_candidates()
         const double l_bound = list_length_ + skin;
         neighbours_.emplace(std::sqrt(reach * reach + 0.25 * l_bound * l_bound), skin);
     };
-    if (!neighbours_) make_list(longest_element());
-    if (!neighbours_->update(positions)) return;
-    if (const double L = longest_element(); L > list_length_) { // an element outgrew the cutoff's bound
+    // Called when the list is stale (forces_in_region found a vertex beyond half the skin, or there is none).
+    if (!neighbours_)
+        make_list(longest_element());
+    else if (const double L = longest_element(); L > list_length_) // an element outgrew the cutoff's bound
         make_list(L);
-        neighbours_->update(positions);
-    }
+    neighbours_->build(positions);
     ++list_builds_;
 
     std::vector<Candidate> fresh;
