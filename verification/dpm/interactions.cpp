@@ -5,12 +5,14 @@
 #include "dpm/interactions.hpp"
 #include "core/rng.hpp"
 #include "dpm/system.hpp"
+#include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_against_central_differences;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -44,24 +46,12 @@ void check_derivatives(const DpmSystem& s, const Eigen::VectorXd& x, unsigned sm
     const double energy = interaction_energy(s, x, &g, &h, smooth_terms);
     CHECK_CLOSE(interaction_energy(s, x, nullptr, nullptr, smooth_terms), energy,
                 (Tolerance{10 * round_off, 0}));
-    const double step = 1e-6;
-    Eigen::VectorXd g_fd(dofs);
-    Eigen::MatrixXd h_fd(dofs, dofs);
-    for (Eigen::Index k = 0; k < dofs; ++k) {
-        Eigen::VectorXd xp = x, xm = x, gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
-        xp(k) += step;
-        xm(k) -= step;
-        g_fd(k) = (interaction_energy(s, xp, &gp, nullptr, smooth_terms) -
-                   interaction_energy(s, xm, &gm, nullptr, smooth_terms)) /
-                  (2 * step);
-        h_fd.col(k) = (gp - gm) / (2 * step);
-    }
-    // Central differences, h = 1e-6: truncation ~1e-12, round-off ~1e-10 (see shape_energy.cpp). A random
-    // configuration has a Heaviside boundary within h of a sampled point with probability ~1e-6.
-    const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff()),
-                 h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+    check_against_central_differences(
+        [&](const Eigen::VectorXd& y, Eigen::VectorXd* gy, Eigen::MatrixXd* hy) {
+            return interaction_energy(s, y, gy, hy, smooth_terms);
+        },
+        x, g, h);
+    const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
     // Interactions are internal forces: they sum to zero (Newton's third law).
     CHECK_CLOSE(g.reshaped(2, dofs / 2).rowwise().sum().norm(), 0.0,
                 (Tolerance{0, 1e3 * round_off * g_scale}));

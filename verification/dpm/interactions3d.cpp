@@ -5,10 +5,12 @@
 // contact has the closed form k_c/2 (sigma_mb - r)^2; a whole-box translation by L leaves U unchanged.
 #include "core/rng.hpp"
 #include "dpm/system3d.hpp"
+#include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_against_central_differences;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -49,25 +51,12 @@ TEST_CASE(
         Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
         const double energy = interaction_energy3d(s, x, &g, &h);
         CHECK_CLOSE(interaction_energy3d(s, x, nullptr, nullptr), energy, (Tolerance{10 * round_off, 0}));
-        const double step = 1e-6;
-        Eigen::VectorXd g_fd(dofs);
-        Eigen::MatrixXd h_fd(dofs, dofs);
-        for (Eigen::Index k = 0; k < dofs; ++k) {
-            Eigen::VectorXd xp = x, xm = x, gp = Eigen::VectorXd::Zero(dofs),
-                            gm = Eigen::VectorXd::Zero(dofs);
-            xp(k) += step;
-            xm(k) -= step;
-            g_fd(k) =
-                (interaction_energy3d(s, xp, &gp, nullptr) - interaction_energy3d(s, xm, &gm, nullptr)) /
-                (2 * step);
-            h_fd.col(k) = (gp - gm) / (2 * step);
-        }
-        // Central differences, h = 1e-6: truncation ~1e-12, round-off ~1e-10 of the scale (as in 2D,
-        // interactions.cpp); a Heaviside boundary within h of a sample has probability ~1e-6.
-        const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff()),
-                     h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-        CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-        CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+        check_against_central_differences(
+            [&](const Eigen::VectorXd& y, Eigen::VectorXd* gy, Eigen::MatrixXd* hy) {
+                return interaction_energy3d(s, y, gy, hy);
+            },
+            x, g, h);
+        const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
         CHECK_CLOSE(g.reshaped(3, dofs / 3).rowwise().sum().norm(), 0.0,
                     (Tolerance{0, 1e3 * round_off * g_scale}));
         // Periodicity: moving one particle by a box vector changes nothing (minimum image per vertex pair).

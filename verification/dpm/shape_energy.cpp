@@ -3,12 +3,14 @@
 // the shape parameter of section 9.3.1 and its minimum N tan(pi/N)/pi.
 #include "dpm/shape_energy.hpp"
 #include "core/rng.hpp"
+#include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_against_central_differences;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -52,26 +54,13 @@ void check_derivatives(const ShapeParameters& s, const Eigen::VectorXd& x, unsig
     const double energy = shape_energy(s, x, 0, n, &g, &h, term);
     // The energy alone and with derivatives is the same code: equal to round-off.
     CHECK_CLOSE(shape_energy(s, x, 0, n, nullptr, nullptr, term), energy, (Tolerance{10 * round_off, 0}));
-    const double step = 1e-6;
-    Eigen::VectorXd g_fd(dofs);
-    Eigen::MatrixXd h_fd(dofs, dofs);
-    for (int k = 0; k < dofs; ++k) {
-        Eigen::VectorXd xp = x, xm = x;
-        xp(k) += step;
-        xm(k) -= step;
-        Eigen::VectorXd gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
-        g_fd(k) =
-            (shape_energy(s, xp, 0, n, &gp, nullptr, term) - shape_energy(s, xm, 0, n, &gm, nullptr, term)) /
-            (2 * step);
-        h_fd.col(k) = (gp - gm) / (2 * step);
-    }
-    // Central differences with h = 1e-6 on O(1) coordinates: truncation h^2 |U'''| ~ 1e-12, round-off
-    // eps |U| / h ~ 1e-10; 1e-7 of the largest entry (or of 1) is far above both and far below any error
-    // of a wrong derivative (which is O(1) of the entry).
+    check_against_central_differences(
+        [&](const Eigen::VectorXd& y, Eigen::VectorXd* gy, Eigen::MatrixXd* hy) {
+            return shape_energy(s, y, 0, n, gy, hy, term);
+        },
+        x, g, h);
     const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
     const double h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
     // The Hessian of an energy is symmetric (exact in AutoDiff up to round-off).
     CHECK_CLOSE((h - h.transpose()).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off * h_scale}));
     // Translation invariance: the forces sum to zero.

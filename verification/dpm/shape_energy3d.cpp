@@ -6,10 +6,12 @@
 // finite difference.
 #include "dpm/shape_energy3d.hpp"
 #include "core/rng.hpp"
+#include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_against_central_differences;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -63,26 +65,13 @@ void check_derivatives(const ShapeParameters3d& s, const TriangleMesh& mesh, con
                 (Tolerance{10 * round_off, 100 * round_off}));
     CHECK_CLOSE((g_analytic - g).cwiseAbs().maxCoeff(), 0.0,
                 (Tolerance{0, 1000 * round_off * std::max(1.0, g.cwiseAbs().maxCoeff())}));
-    const double step = 1e-6;
-    Eigen::VectorXd g_fd(dofs);
-    Eigen::MatrixXd h_fd(dofs, dofs);
-    for (Eigen::Index k = 0; k < dofs; ++k) {
-        Eigen::VectorXd xp = x, xm = x;
-        xp(k) += step;
-        xm(k) -= step;
-        Eigen::VectorXd gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
-        g_fd(k) = (shape_energy3d(s, mesh, xp, 0, &gp, nullptr, term) -
-                   shape_energy3d(s, mesh, xm, 0, &gm, nullptr, term)) /
-                  (2 * step);
-        h_fd.col(k) = (gp - gm) / (2 * step);
-    }
-    // Central differences with h = 1e-6 on O(1) coordinates: truncation h^2 |U'''| ~ 1e-12, round-off
-    // eps |U| / h ~ 1e-10 (U up to ~10 here); 1e-7 of the largest entry (or of 1) is far above both and
-    // far below the O(1) relative error of a wrong derivative.
+    check_against_central_differences(
+        [&](const Eigen::VectorXd& y, Eigen::VectorXd* gy, Eigen::MatrixXd* hy) {
+            return shape_energy3d(s, mesh, y, 0, gy, hy, term);
+        },
+        x, g, h);
     const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
     const double h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
     CHECK_CLOSE((h - h.transpose()).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off * h_scale}));
     // Rigid-motion invariance: sum of forces and sum of torques r x F vanish (round-off of N terms).
     const Eigen::Matrix3Xd r = x.reshaped(3, n), f = g.reshaped(3, n);

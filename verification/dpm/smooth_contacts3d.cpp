@@ -17,12 +17,14 @@
 #include "dpm/interactions3d.hpp"
 #include "dpm/single_particle3d.hpp"
 #include "dpm/system3d.hpp"
+#include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
 #include <set>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_against_central_differences;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -192,25 +194,12 @@ TEST_CASE("3D smooth contacts: forces = -grad U, Hessian = d(grad U), forces and
         const std::vector<int> contacts = contact_counts3d(s, x);
         CHECK(contacts[0] > 0);
         CHECK(contacts[2] > 0); // with the box, through the boundary as well
-        const double step = 1e-6;
-        Eigen::VectorXd g_fd(dofs);
-        Eigen::MatrixXd h_fd(dofs, dofs);
-        for (Eigen::Index k = 0; k < dofs; ++k) {
-            Eigen::VectorXd xp = x, xm = x, gp = Eigen::VectorXd::Zero(dofs),
-                            gm = Eigen::VectorXd::Zero(dofs);
-            xp(k) += step;
-            xm(k) -= step;
-            g_fd(k) =
-                (interaction_energy3d(s, xp, &gp, nullptr) - interaction_energy3d(s, xm, &gm, nullptr)) /
-                (2 * step);
-            h_fd.col(k) = (gp - gm) / (2 * step);
-        }
-        // Central differences, h = 1e-6: truncation ~1e-12, round-off ~1e-10 of the scale (as for rough
-        // contacts); a region or Heaviside boundary within h of a sample has probability ~1e-5.
-        const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff()),
-                     h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-        CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-        CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+        check_against_central_differences(
+            [&](const Eigen::VectorXd& y, Eigen::VectorXd* gy, Eigen::MatrixXd* hy) {
+                return interaction_energy3d(s, y, gy, hy);
+            },
+            x, g, h);
+        const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
         // Newton's third law: translation invariance of every term.
         const Eigen::Matrix3Xd forces = -g.reshaped(3, dofs / 3);
         CHECK_CLOSE(forces.rowwise().sum().norm(), 0.0, (Tolerance{0, 1e3 * round_off * g_scale}));
@@ -246,22 +235,9 @@ TEST_CASE("3D smooth contacts through a Lees-Edwards sheared boundary: images, f
     };
     CHECK_CLOSE(moved(Eigen::Vector3d(gamma * L, L, 0)), energy, (Tolerance{1e3 * round_off, 0}));
     CHECK(std::abs(moved(Eigen::Vector3d(0, L, 0)) - energy) > 0.1 * energy);
-    const double step = 1e-6;
-    Eigen::VectorXd g_fd(dofs);
-    Eigen::MatrixXd h_fd(dofs, dofs);
-    for (Eigen::Index k = 0; k < dofs; ++k) {
-        Eigen::VectorXd xp = x, xm = x, gp = Eigen::VectorXd::Zero(dofs), gm = Eigen::VectorXd::Zero(dofs);
-        xp(k) += step;
-        xm(k) -= step;
-        g_fd(k) = (interaction_energy3d(s, xp, &gp, nullptr) - interaction_energy3d(s, xm, &gm, nullptr)) /
-                  (2 * step);
-        h_fd.col(k) = (gp - gm) / (2 * step);
-    }
-    // As in the unsheared test above.
-    const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff()),
-                 h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
-    CHECK_CLOSE((g - g_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * g_scale}));
-    CHECK_CLOSE((h - h_fd).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 1e-7 * h_scale}));
+    check_against_central_differences([&](const Eigen::VectorXd& y, Eigen::VectorXd* gy,
+                                          Eigen::MatrixXd* hy) { return interaction_energy3d(s, y, gy, hy); },
+                                      x, g, h);
     // Virial pressure = -dU/dV under homogeneous dilation at fixed strain (tolerance as in the next test).
     const double V = std::pow(L, 3), e = 1e-5;
     const double dV = (std::pow(1 + e, 3) - std::pow(1 - e, 3)) * V;
