@@ -7,14 +7,13 @@
 // plus 6 per rattler (sec. 9.4.3, Fig. 9.15b).
 #include "core/rng.hpp"
 #include "dpm/jam3d.hpp"
-#include "dpm/modes.hpp"
+#include "support/jammed3d.hpp"
 #include "support/tolerance.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <algorithm>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_jammed3d;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -87,29 +86,5 @@ TEST_CASE(
     o.pressure_onset = 1e-5;
     o.seed = 3;
     Jam3dResult j = jam3d(o);
-    CHECK(j.pressure >= 1e-5);
-    CHECK(j.pressure < 1.01e-5);
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(j.x.size());
-    total_energy3d(j.system, j.x, &g, nullptr);
-    const double rms = g.norm() / std::sqrt(double(g.size()));
-    CHECK(rms < j.fire.force_tolerance); // FIRE's stopping rule
-    const std::vector<int> contacts = contact_counts3d(j.system, j.x);
-    for (int c : contacts)
-        CHECK(c > 0);
-    // Zero modes after Newton polishing to round-off forces (a residual force f shifts them by ~f R): the
-    // smallest non-zero eigenvalue is ~1e-4 k_v v0^(4/3), the zero ones ~1e-16, threshold 1e-10 (Fig. 9.15a).
-    const EnergyWithDerivatives energy = [&j](const Eigen::VectorXd& y, Eigen::VectorXd* gr,
-                                              Eigen::MatrixXd* h) {
-        return total_energy3d(j.system, y, gr, h);
-    };
-    polish_newton(energy, j.x, 1e-14 * j.pressure_unit, 30);
-    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
-    total_energy3d(j.system, j.x, nullptr, &m);
-    const Eigen::VectorXd lambda =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues() /
-        j.eigenvalue_unit;
-    const std::vector<int> after = contact_counts3d(j.system, j.x);
-    const auto rattlers = std::count(after.begin(), after.end(), 0);
-    CHECK(count_zero_modes(lambda, 1e-10) == 3 + 6 * rattlers);
-    MESSAGE("phi = " << j.phi << ", box steps " << j.box_steps << ", FIRE iterations " << j.fire_iterations);
+    check_jammed3d(j, o.pressure_onset);
 }
