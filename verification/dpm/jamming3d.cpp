@@ -10,7 +10,6 @@
 #include "support/jammed3d.hpp"
 #include "support/tolerance.hpp"
 
-
 using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::check_jammed3d;
