@@ -13,6 +13,7 @@
 using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::check_jammed3d;
+using softgrain::verification::icosahedron_shape3d;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -25,13 +26,7 @@ DpmSystem3d deformed_overlapping(ShapeModel model, Eigen::VectorXd& x)
     DpmSystem3d s;
     s.box = 3.5;
     s.meshes.push_back(icosahedron_mesh());
-    const Eigen::VectorXd reference = mesh_coordinates(s.meshes[0]);
-    const ShapeParameters3d shape = model_shape3d(
-        model, s.meshes[0], reference,
-        model == ShapeModel::floppy ? 1.15
-                                    : shape_parameter3d(mesh_surface_area(s.meshes[0], reference, 0),
-                                                        mesh_volume(s.meshes[0], reference, 0)),
-        1.0, Stiffness3d{});
+    const ShapeParameters3d shape = icosahedron_shape3d(model, s.meshes[0]);
     Rng rng(11);
     for (int m = 0; m < 4; ++m) {
         const Eigen::Vector3d centre(0.3 + 1.75 * (m % 2), 0.2 + 1.75 * (m / 2), 1.75 + 0.4 * m);
@@ -85,5 +80,6 @@ TEST_CASE(
     o.pressure_onset = 1e-5;
     o.seed = 3;
     Jam3dResult j = jam3d(o);
-    check_jammed3d(j, o.pressure_onset);
+    const auto modes = check_jammed3d(j, o.pressure_onset);
+    CHECK(modes.zero_modes == 3 + 6 * modes.rattlers);
 }

@@ -20,5 +20,7 @@ TEST_CASE("3D jamming with smooth contacts ends in force balance at 1 <= P/P_t <
     o.interaction = InteractionKind::smooth;
     Jam3dResult j = jam3d(o);
     CHECK(j.system.interaction == InteractionKind::smooth);
-    check_jammed3d(j, o.pressure_onset); // both particles in contact: the 3 zero modes alone
+    const auto modes = check_jammed3d(j, o.pressure_onset);
+    CHECK(modes.rattlers == 0); // both particles in contact
+    CHECK(modes.zero_modes == 3);
 }

@@ -8,12 +8,14 @@
 #include "core/rng.hpp"
 #include "dpm/single_particle3d.hpp"
 #include "dpm/system3d.hpp"
+#include "support/jammed3d.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::icosahedron_shape3d;
 using softgrain::verification::Tolerance;
 
 namespace {
@@ -27,13 +29,7 @@ DpmSystem3d random_sheared3d(ShapeModel model, Rng& rng, Eigen::VectorXd& x)
     s.box = 4.2;
     s.lees_edwards_strain = 0.23;
     s.meshes.push_back(icosahedron_mesh());
-    const Eigen::VectorXd reference = mesh_coordinates(s.meshes[0]);
-    const ShapeParameters3d shape = model_shape3d(
-        model, s.meshes[0], reference,
-        model == ShapeModel::floppy ? 1.15
-                                    : shape_parameter3d(mesh_surface_area(s.meshes[0], reference, 0),
-                                                        mesh_volume(s.meshes[0], reference, 0)),
-        1.0, Stiffness3d{});
+    const ShapeParameters3d shape = icosahedron_shape3d(model, s.meshes[0]);
     for (int m = 0; m < 14; ++m) {
         const Eigen::Vector3d centre(rng.uniform(0, 4.2), rng.uniform(0, 4.2), rng.uniform(0, 4.2));
         Eigen::Matrix3Xd v = s.meshes[0].vertices.colwise() + centre;
