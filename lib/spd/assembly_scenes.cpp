@@ -29,6 +29,7 @@ void run_bench(const Parameters& p, RunContext& ctx)
     setup.particles = static_cast<int>(p.integer("particles"));
     setup.ring.nodes = static_cast<int>(p.integer("nodes"));
     setup.seed = static_cast<std::uint64_t>(p.integer("seed"));
+    setup.ring.dt_factor = p.real("dt_factor");
     ctx.record_seed(setup.seed);
     const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(setup.particles))));
     Assembly a = rings_in_box(setup, columns);
@@ -228,6 +229,10 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             ParameterSpec::integer("nodes", 32, "1", "vertices per ring").at_least(8),
             ParameterSpec::integer("steps", 2000, "1", "time steps (the first is not timed)").at_least(2),
             ParameterSpec::integer("seed", 1, "1", "seed of the initial velocities").non_negative(),
+            ParameterSpec::real("dt_factor", 0.2, "1",
+                                "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
+                                "(decision spd-vertex-pair-stability)")
+                .positive(),
         },
         run_bench});
     registry.add(Scene{
@@ -267,9 +272,9 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
                                 "deposition at rest when the largest unbalanced vertex force is below this")
                 .positive(),
             ParameterSpec::real(
-                "dt_factor", 0.25, "1",
-                "time step over dt_c = sqrt(m/k_max); stable with up to 3 damped contacts on a "
-                "vertex below 0.286 (decision spd-compaction-time-step)")
+                "dt_factor", 0.2, "1",
+                "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
+                "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
                 .positive(),
             ParameterSpec::integer("seed", 1, "1", "seed of the radii and of the deposition").non_negative(),
         },

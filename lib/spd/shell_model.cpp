@@ -747,12 +747,24 @@ double ShellModel::critical_time_step() const
     return std::sqrt(min_vertex_mass() / k_max);
 }
 
+namespace {
+// Largest h of the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v': the root of
+// h^2 omega^2 + 2 h gamma = 4.
+double damped_oscillator_limit(double omega2, double gamma)
+{
+    return (std::sqrt(gamma * gamma + 4 * omega2) - gamma) / omega2;
+}
+} // namespace
+
 double ShellModel::stable_time_step() const
 {
     double limit = critical_time_step();
     if (contact_.k_n > 0) {
         const double m = min_vertex_mass(), omega2 = contact_.k_n / m, gamma = contact_.normal_damping / m;
-        limit = std::min(limit, (std::sqrt(gamma * gamma + 4 * omega2) - gamma) / omega2);
+        limit = std::min(limit, damped_oscillator_limit(omega2, gamma)); // a vertex on a wall
+        const auto free_shells =
+            std::count_if(shells_.begin(), shells_.end(), [](const Shell& s) { return !s.rigid; });
+        if (free_shells > 1) limit = std::min(limit, damped_oscillator_limit(4 * omega2, 4 * gamma));
     }
     return limit;
 }
@@ -764,9 +776,9 @@ void ShellModel::check_time_step(double dt) const
     std::ostringstream cause;
     cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
           << " s (" << limit / dt_c << " dt_c, dt_c = sqrt(m/k_max) = " << dt_c
-          << " s): the smaller of dt_c and the damped-contact limit (sqrt(gamma^2 + 4 omega^2) - "
-             "gamma)/omega^2 "
-             "of velocity Verlet (decision spd-stability-limit)";
+          << " s): the smallest of dt_c and the damped-contact limits (sqrt(gamma^2 + 4 omega^2) - "
+             "gamma)/omega^2 of velocity Verlet for a vertex on a wall and, between free shells, for a "
+             "vertex-vertex pair (decisions spd-stability-limit, spd-vertex-pair-stability)";
     throw NumericalError("time step", steps_, cause.str());
 }
 

@@ -35,7 +35,7 @@ CompactionSetup small_setup()
     setup.assembly.radius_spread = 0.15;
     setup.assembly.ring.nodes = 16;
     setup.assembly.ring.material.h = 0.1;
-    setup.assembly.ring.dt_factor = 0.25; // decision spd-compaction-time-step
+    setup.assembly.ring.dt_factor = 0.2; // decisions spd-compaction-time-step, spd-vertex-pair-stability
     setup.strain_max = 0.15;
     setup.wall_speed = 3e-3;
     return setup;
