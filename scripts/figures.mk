@@ -11,5 +11,11 @@ all: $(OUT)/index.html
 $(OUT)/index.html: $(REPORTS)
 	@python3 scripts/reproduce index --out $(OUT)
 
+# Runs shared between figures (the same scene, parameters and binary, e.g. SPD Figs. 27-29) are made once per
+# invocation: the directory is emptied when make reads this file, so no run of an earlier invocation (whose
+# timings belong to another moment) is reused.
+RUNS := $(OUT)/runs-$(SCALE)
+$(shell rm -rf $(RUNS))
+
 $(OUT)/%.claims.json: FORCE
-	@python3 scripts/reproduce figure $* --scale $(SCALE) --softgrain $(SOFTGRAIN) --out $(OUT)
+	@python3 scripts/reproduce figure $* --scale $(SCALE) --softgrain $(SOFTGRAIN) --out $(OUT) --runs $(RUNS)
