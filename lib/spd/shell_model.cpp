@@ -846,6 +846,23 @@ double ShellModel::max_free_force() const
     return m;
 }
 
+int ShellModel::max_free_force_vertex() const
+{
+    double m = -1;
+    int vertex = 0;
+    for (Eigen::Index d = 0; d < f_.size(); ++d)
+        if (inverse_mass_[d] > 0 && std::abs(f_[d]) > m) {
+            m = std::abs(f_[d]);
+            vertex = static_cast<int>(d / 2);
+        }
+    return vertex;
+}
+
+std::string ShellModel::describe_vertex(int i) const
+{
+    return "vertex " + std::to_string(i) + " of particle " + std::to_string(shell_of(i));
+}
+
 Vec2 ShellModel::contact_force_on(int shell) const
 {
     const Shell& s = shells_[shell];
@@ -915,12 +932,26 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
         if (model.max_free_force() < force_tolerance) return n;
         if (after_check) after_check(n);
     }
+    // Which vertex holds the residual, and whether its force reverses from one step to the next (one more
+    // step is taken to see it): the period-2 mode of a contact configuration above its limit (decision
+    // spd-vertex-pair-stability) rather than a slow approach to rest.
+    const int i = model.max_free_force_vertex();
+    const Vec2 before = model.force(i);
+    model.step(dt, damping);
+    const bool reverses = model.force(i).dot(before) < -0.5 * before.squaredNorm();
     std::ostringstream cause;
     cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "
-          << model.max_free_force() << " N > tolerance " << force_tolerance
-          << " N): damping too weak or too strong for the slowest mode, or dt = "
-          << dt / model.critical_time_step() << " dt_c too close to the stability limit "
-          << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
+          << before.cwiseAbs().maxCoeff() << " N > tolerance " << force_tolerance << " N, on "
+          << model.describe_vertex(i) << ")";
+    if (reverses)
+        cause << ": its force reverses at every step, the period-2 oscillation of the scheme: dt = "
+              << dt / model.critical_time_step()
+              << " dt_c is above the stability limit of the contacts there (the limit checked is "
+              << model.stable_time_step() / model.critical_time_step() << " dt_c)";
+    else
+        cause << ": damping too weak or too strong for the slowest mode, or dt = "
+              << dt / model.critical_time_step() << " dt_c too close to the stability limit "
+              << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
 }
 

@@ -22,6 +22,7 @@
 #include <exception>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace softgrain {
@@ -132,6 +133,8 @@ class ShellModel
     double kinetic_energy() const;
     double
     max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
+    int max_free_force_vertex() const;        // the vertex holding max_free_force()
+    std::string describe_vertex(int i) const; // "vertex i of particle p", for diagnoses
     Vec2 vertex(int i) const { return {x_[2 * i], x_[2 * i + 1]}; }
     std::vector<Vec2> outline(int shell) const; // the vertex positions of a shell, in order [m]
     Vec2 velocity(int i) const { return {v_[2 * i], v_[2 * i + 1]}; }
@@ -273,7 +276,8 @@ class ShellModel
 
 // Quasi-static relaxation (section 4.1, "complete relaxation after each strain increment"): damped
 // velocity-Verlet steps until the largest unbalanced force on a free degree of freedom (damping excluded)
-// is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice.
+// is below force_tolerance [N]; checked every 16 steps. Throws NumericalError if max_steps do not suffice,
+// naming the vertex that holds the residual and whether its force reverses at every step (one step more).
 // Returns the number of steps taken. A long relaxation can be resumed: `taken` steps were taken before (a
 // multiple of 16), and `after_check(n)` is called after each unsuccessful check with the steps taken so far
 // (where a checkpoint may be written).
