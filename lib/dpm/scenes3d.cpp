@@ -262,8 +262,7 @@ void run_modes3d(const Parameters& p, RunContext& context)
     s["vertices"] = particle.mesh.vertex_count();
     s["A_mesh"] = particle.A_mesh;
     s["A0_used"] = particle.A0;
-    s["shape_parameter"] =
-        shape_parameter3d(mesh_surface_area(particle.mesh, x, 0), mesh_volume(particle.mesh, x, 0));
+    s["shape_parameter"] = mesh_shape_parameter3d(particle.mesh, x, 0);
     s["volume"] = mesh_volume(particle.mesh, x, 0);
     s["energy"] = shape_energy3d(particle.shape, particle.mesh, x, 0, nullptr, nullptr);
     s["force_max"] = particle.force_max;
