@@ -93,7 +93,7 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     k.gamma = o.stiffness.gamma * kv * std::pow(v0, 5.0 / 3.0);
     const auto rest_shape = [&](double r) {
         const Eigen::VectorXd xr = r * mesh_coordinates(unit);
-        const double A_mesh = shape_parameter3d(mesh_surface_area(unit, xr, 0), mesh_volume(unit, xr, 0));
+        const double A_mesh = mesh_shape_parameter3d(unit, xr, 0);
         return model_shape3d(o.model, unit, xr, o.model == ShapeModel::floppy ? o.A0_floppy : A_mesh, kv, k);
     };
     const ShapeParameters3d small_shape = rest_shape(r_small),

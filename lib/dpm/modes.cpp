@@ -1,6 +1,7 @@
 #include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <cmath>
 
 namespace softgrain::dpm {
@@ -115,29 +116,50 @@ double participation_ratio(const Eigen::VectorXd& mode)
     return s2 * s2 / (static_cast<double>(N) * s4);
 }
 
-ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+namespace {
+
+// One particle's vertices r and mode field u (Dim x n) split into u_i = t + omega x (r_i - c) + d_i: t the
+// mean of u_i, omega the least-squares rigid rotation about the vertex mean c (I omega = sum (r_i - c) x u_i
+// with the inertia I = sum |r_i - c|^2 1 - (r_i - c)(r_i - c)^T in 3D; in 2D omega is a scalar and I the sum
+// of |r_i - c|^2). The unnormalised parts |t|^2 n, |omega x (r - c)|^2 and |d|^2 are added to `parts`.
+// A one-vertex particle has I = 0 and no rotation part.
+template <int Dim>
+void add_particle_mode_parts(const Eigen::Matrix<double, Dim, Eigen::Dynamic>& r,
+                             const Eigen::Matrix<double, Dim, Eigen::Dynamic>& u, ModeParts& parts)
 {
-    ModeParts parts;
-    for (const Particle& p : system.particles) {
-        const Eigen::Map<const Eigen::Matrix2Xd> r(x.data() + 2 * p.first, 2, p.count);
-        const Eigen::Map<const Eigen::Matrix2Xd> u(mode.data() + 2 * p.first, 2, p.count);
-        const Eigen::Vector2d c = r.rowwise().mean();
-        const Eigen::Vector2d t = u.rowwise().mean();
-        const Eigen::Matrix2Xd arm = r.colwise() - c;
+    const Eigen::Matrix<double, Dim, 1> c = r.rowwise().mean(), t = u.rowwise().mean();
+    const Eigen::Matrix<double, Dim, Eigen::Dynamic> arm = r.colwise() - c;
+    Eigen::Matrix<double, Dim, Eigen::Dynamic> rotation(Dim, r.cols());
+    if constexpr (Dim == 2) {
         const double inertia = arm.squaredNorm();
         double omega = 0;
-        if (inertia > 0) {
-            for (int i = 0; i < p.count; ++i)
-                omega += arm(0, i) * u(1, i) - arm(1, i) * u(0, i);
-            omega /= inertia;
-        }
-        Eigen::Matrix2Xd rotation(2, p.count);
+        for (Eigen::Index i = 0; i < r.cols(); ++i)
+            omega += arm(0, i) * u(1, i) - arm(1, i) * u(0, i);
+        if (inertia > 0) omega /= inertia;
         rotation.row(0) = -omega * arm.row(1);
         rotation.row(1) = omega * arm.row(0);
-        parts.translation += p.count * t.squaredNorm();
-        parts.rotation += rotation.squaredNorm();
-        parts.deformation += ((u.colwise() - t) - rotation).squaredNorm();
+    } else {
+        Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+        for (Eigen::Index i = 0; i < r.cols(); ++i) {
+            const Eigen::Vector3d a = arm.col(i);
+            inertia += a.squaredNorm() * Eigen::Matrix3d::Identity() - a * a.transpose();
+            moment += a.cross(Eigen::Vector3d(u.col(i)));
+        }
+        // Minimum-norm least squares: a singular I (one vertex, or all on a line) leaves no rotation
+        // about the axis it cannot resolve.
+        const Eigen::Vector3d omega = inertia.completeOrthogonalDecomposition().solve(moment);
+        for (Eigen::Index i = 0; i < r.cols(); ++i)
+            rotation.col(i) = omega.cross(Eigen::Vector3d(arm.col(i)));
     }
+    parts.translation += static_cast<double>(r.cols()) * t.squaredNorm();
+    parts.rotation += rotation.squaredNorm();
+    parts.deformation += ((u.colwise() - t) - rotation).squaredNorm();
+}
+
+// Shares of |u|^2: the three parts divided by their sum (which is |u|^2, the parts being orthogonal).
+ModeParts normalised(ModeParts parts)
+{
     const double total = parts.translation + parts.rotation + parts.deformation;
     if (total > 0) {
         parts.translation /= total;
@@ -145,6 +167,26 @@ ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, cons
         parts.deformation /= total;
     }
     return parts;
+}
+
+} // namespace
+
+ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+{
+    ModeParts parts;
+    for (const Particle& p : system.particles)
+        add_particle_mode_parts<2>(x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count),
+                                   mode.segment(2 * p.first, 2 * p.count).reshaped(2, p.count), parts);
+    return normalised(parts);
+}
+
+ModeParts decompose_mode(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+{
+    ModeParts parts;
+    for (const Particle3d& p : system.particles)
+        add_particle_mode_parts<3>(x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count),
+                                   mode.segment(3 * p.first, 3 * p.count).reshaped(3, p.count), parts);
+    return normalised(parts);
 }
 
 bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,

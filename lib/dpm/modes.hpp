@@ -9,6 +9,7 @@
 
 #include "core/fire.hpp"
 #include "dpm/system.hpp"
+#include "dpm/system3d.hpp"
 
 #include <functional>
 
@@ -36,11 +37,13 @@ double participation_ratio(const Eigen::VectorXd& mode);
 // t = mean of u_i (rigid translation), omega = sum (r_i - c) x u_i / sum |r_i - c|^2 (rigid rotation, the
 // least-squares fit) and d_i the rest (deformation). The three parts are orthogonal; returned are their
 // shares of |u|^2 summed over the particles (they add up to 1). One-vertex particles have no rotation part.
+// In 3D the same with u_i = t + omega x (r_i - c) + d_i, omega the least-squares rigid rotation (a vector).
 struct ModeParts
 {
     double translation = 0, rotation = 0, deformation = 0;
 };
 ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode);
+ModeParts decompose_mode(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode);
 
 // Quartic mode (sec. 9.4.3, Fig. 9.14c): along the unit eigenvector e with eigenvalue lambda [E/L^2],
 // Delta U(dr) = U(x + dr e) - U(x) exceeds the harmonic lambda dr^2 / 2 by more than `factor` (decision

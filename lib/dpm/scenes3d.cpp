@@ -132,6 +132,35 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
     s["soft_mode_exponent_large"] = median_or_null(large_exponents);
 }
 
+// The softest non-zero mode e of a packing (Fig. 9.15d-f, decision dpm-3d-surface-tension-slope): its shares
+// of |e|^2 in rigid particle translations, rotations and deformations (decompose_mode), and the fraction
+// e.M_shape.e / lambda of its eigenvalue that comes from the shape energies (eq. 9.2) of the particles; the
+// rest, 1 minus it, is the contacts' (their stretching, positive, and their pre-stress, -f/r per contact
+// across its normal, negative). `zero` is the number of zero modes (the softest non-zero mode is column
+// `zero` of `modes`, eigenvalues ascending in the units of M); the keys are null if there is none.
+void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
+                          const Eigen::VectorXd& eigenvalues, const Eigen::MatrixXd& modes, int zero,
+                          RunContext& context)
+{
+    auto& s = context.summary();
+    const char* keys[] = {"softest_mode_translation", "softest_mode_rotation", "softest_mode_deformation",
+                          "softest_mode_shape_energy_fraction"};
+    if (zero >= eigenvalues.size()) {
+        for (const char* key : keys)
+            s[key] = nullptr;
+        return;
+    }
+    const Eigen::VectorXd mode = modes.col(zero);
+    const ModeParts parts = decompose_mode(system, x, mode);
+    Eigen::MatrixXd shape_hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
+    for (const Particle3d& p : system.particles)
+        shape_energy3d(p.shape, system.meshes[p.mesh], x, p.first, nullptr, &shape_hessian);
+    s[keys[0]] = parts.translation;
+    s[keys[1]] = parts.rotation;
+    s[keys[2]] = parts.deformation;
+    s[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(zero);
+}
+
 // Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
 // residual force f shifts the zero modes by ~f R).
 void run_packing_modes3d(const Parameters& p, RunContext& context)
@@ -179,6 +208,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
                                            solver.eigenvalues()(k), 0.1, 3.0);
     const double soft = p.real("soft_threshold");
     write_mode_energy3d(energy, j, lambda, modes, zero, soft, quartic, context);
+    write_softest_mode3d(j.system, j.x, solver.eigenvalues(), modes, zero, context);
     // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
     // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
@@ -232,8 +262,7 @@ void run_modes3d(const Parameters& p, RunContext& context)
     s["vertices"] = particle.mesh.vertex_count();
     s["A_mesh"] = particle.A_mesh;
     s["A0_used"] = particle.A0;
-    s["shape_parameter"] =
-        shape_parameter3d(mesh_surface_area(particle.mesh, x, 0), mesh_volume(particle.mesh, x, 0));
+    s["shape_parameter"] = mesh_shape_parameter3d(particle.mesh, x, 0);
     s["volume"] = mesh_volume(particle.mesh, x, 0);
     s["energy"] = shape_energy3d(particle.shape, particle.mesh, x, 0, nullptr, nullptr);
     s["force_max"] = particle.force_max;

@@ -163,6 +163,11 @@ inline double shape_parameter3d(double surface, double volume)
 {
     return std::pow(surface, 1.5) / (6.0 * std::sqrt(std::numbers::pi) * volume);
 }
+// A^3D of the particle at x (mesh_coordinates(mesh): the undeformed mesh, A_min^3D of the text).
+inline double mesh_shape_parameter3d(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)
+{
+    return shape_parameter3d(mesh_surface_area(mesh, x, first), mesh_volume(mesh, x, first));
+}
 
 // Rest state taken from the mesh's own geometry at x: v0 = its volume, a_f0 = area_scale * its face areas,
 // theta_e0 = its bending angles; the stiffnesses as given. With area_scale = 1 the mesh has zero energy

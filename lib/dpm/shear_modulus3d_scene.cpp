@@ -36,10 +36,25 @@ Jam3dOptions jam3d_options(const Parameters& p)
     return o;
 }
 
+// Floppy particles need A0 above the mesh's own A^3D (A_min^3D, sec. 9.3.1). Checked here, before any
+// packing is jammed, so that the message names this scene's key (jam3d would name model_shape3d's A0, and
+// only after the other models' members of the ensemble had run).
+void check_A0_floppy(const Parameters& p)
+{
+    if (p.choice("model") != "floppy" && p.choice("model") != "all") return;
+    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
+    const double A_min = mesh_shape_parameter3d(mesh, mesh_coordinates(mesh), 0);
+    if (p.real("A0_floppy") < A_min)
+        throw InputError("parameter 'A0_floppy' = '" + std::to_string(p.real("A0_floppy")) +
+                         "' is below the " + p.choice("mesh") + "'s own shape parameter A_min^3D = " +
+                         std::to_string(A_min) + "; allowed: a real number >= it");
+}
+
 } // namespace
 
 void run_shear_modulus3d(const Parameters& p, RunContext& context)
 {
+    check_A0_floppy(p);
     const Jam3dOptions o = jam3d_options(p);
     const std::string chosen = p.choice("model");
     const std::vector<std::string> models = chosen == "all" ? model_names : std::vector<std::string>{chosen};

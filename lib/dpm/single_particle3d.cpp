@@ -12,7 +12,7 @@ namespace softgrain::dpm {
 ShapeParameters3d model_shape3d(ShapeModel model, const TriangleMesh& mesh, const Eigen::VectorXd& x,
                                 double A0, double kv, const Stiffness3d& k)
 {
-    const double A_mesh = shape_parameter3d(mesh_surface_area(mesh, x, 0), mesh_volume(mesh, x, 0));
+    const double A_mesh = mesh_shape_parameter3d(mesh, x, 0);
     if (A0 < A_mesh)
         throw InputError("parameter 'A0' = '" + std::to_string(A0) +
                          "' is below the mesh's own shape parameter " + std::to_string(A_mesh) +
@@ -32,7 +32,7 @@ SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleM
     const Eigen::VectorXd unit = mesh_coordinates(mesh);
     p.mesh.vertices /= std::cbrt(mesh_volume(mesh, unit, 0));
     const Eigen::VectorXd reference = mesh_coordinates(p.mesh);
-    p.A_mesh = shape_parameter3d(mesh_surface_area(p.mesh, reference, 0), mesh_volume(p.mesh, reference, 0));
+    p.A_mesh = mesh_shape_parameter3d(p.mesh, reference, 0);
     p.A0 = A0.value_or(p.A_mesh);
     p.shape = model_shape3d(model, p.mesh, reference, p.A0, 1.0, k);
 

@@ -1,9 +1,12 @@
 // DPM Fig. 9.5(c, d): a mode of a packing of deformable particles split per particle into rigid translation,
 // rigid rotation and deformation (dpm/modes.hpp decompose_mode). Fields built from known parts must come
-// back with exactly their shares; and the quartic-mode test of Fig. 9.14(c) on a purely harmonic energy.
+// back with exactly their shares (2D, and 3D as used for the softest mode of Fig. 9.15d-f); and the
+// quartic-mode test of Fig. 9.14(c) on a purely harmonic energy.
+#include "dpm/mesh3d.hpp"
 #include "dpm/modes.hpp"
 #include "support/tolerance.hpp"
 
+#include <Eigen/Geometry>
 #include <numbers>
 
 using namespace softgrain;
@@ -63,6 +66,54 @@ TEST_CASE(
     // A mixture a T + b R + c D of the orthogonal unit fields: shares a^2, b^2, c^2.
     const double a = 0.5, b = 0.3, d = std::sqrt(1 - a * a - b * b);
     const ModeParts mixed = decompose_mode(t.system, t.x, a * translation + b * rotation + d * deformation);
+    CHECK_CLOSE(mixed.translation, a * a, exact);
+    CHECK_CLOSE(mixed.rotation, b * b, exact);
+    CHECK_CLOSE(mixed.deformation, d * d, exact);
+}
+
+TEST_CASE("3D mode decomposition returns the shares of known translation, rotation and deformation "
+          "[DPM Fig. 9.5, Fig. 9.15d-f]")
+{
+    // An icosahedron stretched along z (an anisotropic inertia tensor, so that the least-squares rotation
+    // needs the full tensor), tilted and off-centre, and a one-vertex particle.
+    DpmSystem3d s;
+    Eigen::VectorXd x;
+    s.meshes.push_back(mesh_from_name("icosahedron"));
+    TriangleMesh point;
+    point.vertices = Eigen::Matrix3Xd::Zero(3, 1);
+    s.meshes.push_back(point);
+    const Eigen::Vector3d c(3.0, -1.0, 0.5);
+    const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized()).matrix();
+    const Eigen::Matrix3Xd body =
+        tilt * Eigen::Vector3d(2.0, 2.0, 3.0).asDiagonal() * s.meshes[0].vertices; // centred: vertices +-v
+    s.add_particle(0, body.colwise() + c, 1.0, ShapeParameters3d{}, x);
+    s.add_particle(1, Eigen::Vector3d(8.0, 2.0, -1.0), 1.0, ShapeParameters3d{}, x);
+    const int n = static_cast<int>(body.cols());
+    const Eigen::Vector3d omega(0.3, -0.5, 0.8);
+    Eigen::VectorXd translation = Eigen::VectorXd::Zero(x.size()), rotation = translation,
+                    deformation = translation;
+    for (int i = 0; i < n; ++i) {
+        translation.segment<3>(3 * i) = Eigen::Vector3d(0.6, -0.8, 0.2);
+        rotation.segment<3>(3 * i) = omega.cross(Eigen::Vector3d(body.col(i)));
+        deformation.segment<3>(3 * i) = body.col(i); // breathing: sum r_i = 0 and sum r_i x r_i = 0
+    }
+    translation.segment<3>(3 * n) = Eigen::Vector3d(1.0, 0.5, -0.3); // the point: translation only
+    translation.normalize();
+    rotation.normalize();
+    deformation.normalize();
+    const ModeParts t_only = decompose_mode(s, x, translation);
+    const ModeParts r_only = decompose_mode(s, x, rotation);
+    const ModeParts d_only = decompose_mode(s, x, deformation);
+    // Sums of O(40) terms of order 1 and a 3 x 3 solve: round-off of a few hundred ulp.
+    const Tolerance exact{0, 1000 * round_off};
+    CHECK_CLOSE(t_only.translation, 1.0, exact);
+    CHECK_CLOSE(t_only.rotation + t_only.deformation, 0.0, exact);
+    CHECK_CLOSE(r_only.rotation, 1.0, exact);
+    CHECK_CLOSE(r_only.translation + r_only.deformation, 0.0, exact);
+    CHECK_CLOSE(d_only.deformation, 1.0, exact);
+    CHECK_CLOSE(d_only.translation + d_only.rotation, 0.0, exact);
+    const double a = 0.5, b = 0.3, d = std::sqrt(1 - a * a - b * b);
+    const ModeParts mixed = decompose_mode(s, x, a * translation + b * rotation + d * deformation);
     CHECK_CLOSE(mixed.translation, a * a, exact);
     CHECK_CLOSE(mixed.rotation, b * b, exact);
     CHECK_CLOSE(mixed.deformation, d * d, exact);

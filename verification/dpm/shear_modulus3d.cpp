@@ -6,10 +6,13 @@
 // at distance a, the 4 in the xy plane give k a^2/4 - f a/4 each, the 4 in the yz plane -f a/2 each, those
 // in the xz plane nothing; per site (half the bonds, volume a^3/sqrt(2)):
 //   G = (sqrt(2)/a^3) (k a^2/2 - 3 f a/2) = k/(sqrt(2) a) - (3/4) P,   P = (1/3V) sum f r = 2 sqrt(2) f/a^2.
+#include "core/errors.hpp"
 #include "dpm/shear_modulus.hpp"
+#include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
+#include <string>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
@@ -55,4 +58,17 @@ TEST_CASE("3D G from Lees-Edwards steps of 5e-9 = k_c/(sqrt(2) a) - 3/4 P for a 
         // nonlinearity of the stress (relative 5e-9): 1e-5 relative covers both with margin.
         CHECK_CLOSE(g.modulus, s.kc / (std::sqrt(2.0) * a) - 0.75 * p, (Tolerance{1e-5, 0}));
     }
+}
+
+TEST_CASE("dpm.shear_modulus3d refuses A0_floppy below the mesh's own shape parameter, naming A0_floppy "
+          "[DPM sec. 9.3.1: A_min^3D(icosahedron) = 1.0984]")
+{
+    // Exit 2 before any packing is jammed; the message names the scene's key, its value and the bound.
+    const auto [exit_code, output] =
+        verification::run_softgrain("run dpm.shear_modulus3d --set model=all --set A0_floppy=1.05 --set "
+                                    "packings=1 --out /tmp/softgrain-dpm-shear-modulus3d-input --quiet");
+    CAPTURE(output);
+    CHECK(exit_code == exit_bad_input);
+    CHECK(output.find("'A0_floppy' = '1.05") != std::string::npos);
+    CHECK(output.find("1.098") != std::string::npos); // the icosahedron's A_min^3D
 }
