@@ -16,6 +16,28 @@ using softgrain::verification::Tolerance;
 
 namespace {
 
+// The unit fields of pure translation, rotation and deformation come back with share 1 in their own part
+// and 0 in the others; a mixture a T + b R + c D of them with shares a^2, b^2, c^2.
+template <class System>
+void check_shares(const System& system, const Eigen::VectorXd& x, const Eigen::VectorXd& translation,
+                  const Eigen::VectorXd& rotation, const Eigen::VectorXd& deformation, Tolerance exact)
+{
+    const ModeParts t_only = decompose_mode(system, x, translation);
+    const ModeParts r_only = decompose_mode(system, x, rotation);
+    const ModeParts d_only = decompose_mode(system, x, deformation);
+    CHECK_CLOSE(t_only.translation, 1.0, exact);
+    CHECK_CLOSE(t_only.rotation + t_only.deformation, 0.0, exact);
+    CHECK_CLOSE(r_only.rotation, 1.0, exact);
+    CHECK_CLOSE(r_only.translation + r_only.deformation, 0.0, exact);
+    CHECK_CLOSE(d_only.deformation, 1.0, exact);
+    CHECK_CLOSE(d_only.translation + d_only.rotation, 0.0, exact);
+    const double a = 0.5, b = 0.3, d = std::sqrt(1 - a * a - b * b);
+    const ModeParts mixed = decompose_mode(system, x, a * translation + b * rotation + d * deformation);
+    CHECK_CLOSE(mixed.translation, a * a, exact);
+    CHECK_CLOSE(mixed.rotation, b * b, exact);
+    CHECK_CLOSE(mixed.deformation, d * d, exact);
+}
+
 // Two particles: a regular 10-gon (irregularly rotated, off-centre) and a disk.
 struct TwoParticles
 {
@@ -51,24 +73,8 @@ TEST_CASE(
     translation.normalize();
     rotation.normalize();
     deformation.normalize();
-    // The three fields alone.
-    const ModeParts t_only = decompose_mode(t.system, t.x, translation);
-    const ModeParts r_only = decompose_mode(t.system, t.x, rotation);
-    const ModeParts d_only = decompose_mode(t.system, t.x, deformation);
     // Sums of O(20) terms of order 1: round-off of a few tens of ulp.
-    const Tolerance exact{0, 100 * round_off};
-    CHECK_CLOSE(t_only.translation, 1.0, exact);
-    CHECK_CLOSE(t_only.rotation + t_only.deformation, 0.0, exact);
-    CHECK_CLOSE(r_only.rotation, 1.0, exact);
-    CHECK_CLOSE(r_only.translation + r_only.deformation, 0.0, exact);
-    CHECK_CLOSE(d_only.deformation, 1.0, exact);
-    CHECK_CLOSE(d_only.translation + d_only.rotation, 0.0, exact);
-    // A mixture a T + b R + c D of the orthogonal unit fields: shares a^2, b^2, c^2.
-    const double a = 0.5, b = 0.3, d = std::sqrt(1 - a * a - b * b);
-    const ModeParts mixed = decompose_mode(t.system, t.x, a * translation + b * rotation + d * deformation);
-    CHECK_CLOSE(mixed.translation, a * a, exact);
-    CHECK_CLOSE(mixed.rotation, b * b, exact);
-    CHECK_CLOSE(mixed.deformation, d * d, exact);
+    check_shares(t.system, t.x, translation, rotation, deformation, Tolerance{0, 100 * round_off});
 }
 
 TEST_CASE("3D mode decomposition returns the shares of known translation, rotation and deformation "
@@ -101,22 +107,8 @@ TEST_CASE("3D mode decomposition returns the shares of known translation, rotati
     translation.normalize();
     rotation.normalize();
     deformation.normalize();
-    const ModeParts t_only = decompose_mode(s, x, translation);
-    const ModeParts r_only = decompose_mode(s, x, rotation);
-    const ModeParts d_only = decompose_mode(s, x, deformation);
     // Sums of O(40) terms of order 1 and a 3 x 3 solve: round-off of a few hundred ulp.
-    const Tolerance exact{0, 1000 * round_off};
-    CHECK_CLOSE(t_only.translation, 1.0, exact);
-    CHECK_CLOSE(t_only.rotation + t_only.deformation, 0.0, exact);
-    CHECK_CLOSE(r_only.rotation, 1.0, exact);
-    CHECK_CLOSE(r_only.translation + r_only.deformation, 0.0, exact);
-    CHECK_CLOSE(d_only.deformation, 1.0, exact);
-    CHECK_CLOSE(d_only.translation + d_only.rotation, 0.0, exact);
-    const double a = 0.5, b = 0.3, d = std::sqrt(1 - a * a - b * b);
-    const ModeParts mixed = decompose_mode(s, x, a * translation + b * rotation + d * deformation);
-    CHECK_CLOSE(mixed.translation, a * a, exact);
-    CHECK_CLOSE(mixed.rotation, b * b, exact);
-    CHECK_CLOSE(mixed.deformation, d * d, exact);
+    check_shares(s, x, translation, rotation, deformation, Tolerance{0, 1000 * round_off});
 }
 
 TEST_CASE("a harmonic energy has no quartic modes; a mode with Delta U above 3 lambda dr^2/2 is quartic "
