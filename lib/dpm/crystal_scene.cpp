@@ -55,7 +55,7 @@ void run_crystal_modes(const Parameters& p, RunContext& context)
     s["lambda_mode_exact"] = exact[static_cast<std::size_t>(chosen)].lambda;
     s["q_mode"] = exact[static_cast<std::size_t>(chosen)].q.norm();
     s["participation_ratio"] = participation_ratio(u);
-    s["zero_modes"] = count_zero_modes(modes.eigenvalues, 1e-13);
+    s["zero_modes"] = count_zero_modes(modes.eigenvalues, zero_mode_threshold(modes.eigenvalues, 1e-13));
 }
 
 std::vector<ParameterSpec> crystal_modes_parameters()

@@ -2,7 +2,9 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace softgrain::dpm {
 
@@ -23,6 +25,31 @@ ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x
 int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold)
 {
     return static_cast<int>((eigenvalues.array() < threshold).count());
+}
+
+double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold)
+{
+    const double round_off = static_cast<double>(eigenvalues.size()) *
+                             std::numeric_limits<double>::epsilon() * eigenvalues.cwiseAbs().maxCoeff();
+    return std::max(threshold, round_off);
+}
+
+int free_particle_zero_modes(ShapeModel model, int vertices, int dimension)
+{
+    if (vertices == 1) return dimension;
+    const int rigid_motions = dimension == 2 ? 3 : 6;
+    if (model != ShapeModel::floppy) return rigid_motions;
+    return dimension == 2 ? vertices - 1 : vertices + 3;
+}
+
+std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(x.size());
+    total_energy(system, x, &contact_forces, nullptr, interaction_part);
+    std::vector<bool> out;
+    for (const Particle& q : system.particles)
+        out.push_back(contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0));
+    return out;
 }
 
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options)
@@ -81,6 +108,16 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
     return polish_newton([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
                                    Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
                          x, force_tolerance, max_steps);
+}
+
+double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit)
+{
+    return polish_newton(energy, x, 1e-14 * force_unit, 30);
+}
+
+double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit)
+{
+    return polish_newton(system, x, 1e-14 * force_unit, 30);
 }
 
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,

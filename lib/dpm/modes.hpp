@@ -1,10 +1,12 @@
 // Vibrational modes, DPM section 9.4.3: the dynamical matrix M = d^2 U / dr dr (eq. 9.28, unit vertex
 // masses) is the exact Hessian of the total energy; its eigenvalues (ascending) and unit eigenvectors come
 // from Eigen's SelfAdjointEigenSolver. Dimensionless eigenvalues lambda~ = lambda/(k_a a0) in 2D; a mode
-// with lambda~ below the threshold (1e-13 in 2D, Fig. 9.14a) counts as a zero mode.
+// with lambda~ below the threshold (1e-13 in 2D, Fig. 9.14a; 1e-10 in 3D, Fig. 9.15a), or below the
+// eigensolver's round-off bound where that is larger (zero_mode_threshold), counts as a zero mode.
 //
 // Also: relaxation to a mechanical equilibrium exact to round-off (needed for exact zero-mode counts: a
-// residual force f gives rotation "modes" of order f R) and the energy change along a mode (Fig. 9.14c).
+// residual force f on a particle of size R lifts its rotation to lambda ~ f/R) and the energy change along
+// a mode (Fig. 9.14c).
 #pragma once
 
 #include "core/fire.hpp"
@@ -12,6 +14,7 @@
 #include "dpm/system3d.hpp"
 
 #include <functional>
+#include <vector>
 
 namespace softgrain::dpm {
 
@@ -27,6 +30,23 @@ ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x
 
 // Number of eigenvalues below the threshold (in the same units).
 int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
+// The threshold a zero mode is counted against (decision dpm-zero-mode-count): the paper's threshold, or
+// n eps max|lambda| where that is larger. A backward-stable dense eigensolver returns each eigenvalue of the
+// n x n symmetric M to within p(n) eps ||M||_2 (Weyl's inequality with the backward error of the symmetric
+// QR algorithm, Golub & Van Loan, Matrix Computations, ch. 8), so an exact zero mode (the translations of a
+// periodic packing, the rigid motions of a rattler) can come out anywhere below that bound; n eps ||M||_2 is
+// the usual numerical-rank tolerance (numpy's matrix_rank, MATLAB's rank). For a
+// single 2D particle (n = 20) it stays below 1e-13; for N = 16 packings (n = 384, max lambda~ 17-25) it is
+// 1.5e-12 - 2.2e-12. Same units as the eigenvalues.
+double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold);
+// Zero modes of an isolated particle at its equilibrium (DPM sec. 9.4.3): a one-vertex disk has its
+// `dimension` translations; a floppy polygon N_dof - N_c = N - 1 (Fig. 9.14a), a floppy polyhedron
+// N_dof - N_f - 1 = N + 3 (Fig. 9.15a); an elastic shell or a surface-tension particle its rigid motions,
+// 3 in 2D and 6 in 3D. A rattler of a packing keeps these.
+int free_particle_zero_modes(ShapeModel model, int vertices, int dimension);
+// Rattlers of a packing: the particles on which no contact force acts (exactly zero).
+std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x);
+
 // Participation ratio (sum_i |u_i|^2)^2 / (N sum_i |u_i|^4) of a mode over its N vertices: about 1 for a
 // plane wave (2/3 for a standing one), of order 1/N for a mode on a few vertices (Fig. 9.5b's quasi-localised
 // mode).
@@ -73,6 +93,13 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
                      int max_steps);
 // The same on the total energy of a 2D system.
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
+// The equilibrium a packing's spectrum is taken at (decision dpm-zero-mode-count): polish_newton to a largest
+// force below 1e-14 force_unit, at most 30 steps; returns the largest force reached. FIRE stops the jamming
+// protocol at an rms force of 1e-4 P_t, which leaves forces of ~1e-10 on rattlers: their rotations (exact
+// zero modes only where the particle's force vanishes) then sit at |lambda~| ~ 1e-12 - 1e-9, and a particle
+// held by one contact of vanishing force is not yet a rattler.
+double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit);
+double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit);
 
 // U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,

@@ -8,6 +8,7 @@
 #include "dpm/modes.hpp"
 #include "dpm/preferred_shape.hpp"
 #include "dpm/single_particle.hpp"
+#include "dpm/stress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -104,14 +105,16 @@ nlohmann::json median_or_null(std::vector<double> values)
 }
 
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
-// keys common to single particles and packings. Returns the number of zero modes.
-int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double threshold,
+// keys common to single particles and packings. Zero modes: below zero_threshold, or below the round-off
+// bound where that is larger (zero_mode_threshold). Returns the number of zero modes.
+int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double zero_threshold,
                    RunContext& context)
 {
     const auto started = std::chrono::steady_clock::now();
     const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
     const double spectrum_seconds = seconds_since(started);
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
+    const double threshold = zero_mode_threshold(lambda, zero_threshold);
     const int zero = count_zero_modes(lambda, threshold);
 
     auto& spectrum =
@@ -124,7 +127,7 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
     auto& along =
         context.table("mode_energy.dat", {{"k", "1", "mode index"},
                                           {"lambda", "k_a a0", "eigenvalue lambda~_k"},
-                                          {"zero_mode", "1", "1 if lambda~_k < zero_threshold"},
+                                          {"zero_mode", "1", "1 if lambda~_k < zero_threshold_used"},
                                           {"dr", "sqrt(a0)", "amplitude Delta r along the unit eigenvector"},
                                           {"dU", "k_a a0^2", "Delta U = U(x + dr e_k) - U(x)"}});
     const double u0 = total_energy(system, x, nullptr, nullptr);
@@ -156,6 +159,7 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
         s["participation_ratio_lowest"] = participation_ratio(u);
     }
     s["zero_modes"] = zero;
+    s["zero_threshold_used"] = threshold;
     s["degrees_of_freedom"] = x.size();
     s["spectrum_seconds"] = spectrum_seconds; // cost chart (dpm-cost), reported, never asserted
     s["lambda_smallest_nonzero"] =
@@ -182,24 +186,30 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     context.record_seed(o.seed);
     const auto started = std::chrono::steady_clock::now();
-    const JamResult r = jam(o);
+    JamResult r = jam(o);
     const double jam_seconds = seconds_since(started);
     context.count_steps(r.fire_iterations);
+    // Forces to round-off first, as in 3D (decision dpm-zero-mode-count): FIRE leaves ~1e-10 on rattlers.
+    const double force_max = polish_for_modes(r.system, r.x, r.pressure_unit);
     const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
     if (o.model != "smooth_disk") write_mode_parts(r.system, r.x, r.pressure_unit, zero, context);
-    // Rattlers: particles without any contact; each carries 3 zero modes (2 translations, 1 rotation).
-    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
-    total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);
-    int rattlers = 0;
-    for (const Particle& q : r.system.particles)
-        rattlers += contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0);
+    // Rattlers: particles without any contact; each keeps the zero modes of a free particle (3 rigid
+    // motions; a floppy polygon N_mu - 1; a disk its 2 translations, for which the model is not used).
+    const ShapeModel model = o.model == "smooth_disk" ? ShapeModel::shell : shape_model_from_name(o.model);
+    const std::vector<bool> rattling = rattlers(r.system, r.x);
+    int rattler_zero_modes = 0;
+    for (std::size_t q = 0; q < rattling.size(); ++q)
+        if (rattling[q])
+            rattler_zero_modes += free_particle_zero_modes(model, r.system.particles[q].count, 2);
     auto& s = context.summary();
-    s["rattlers"] = rattlers;
+    s["rattlers"] = std::count(rattling.begin(), rattling.end(), true);
+    s["rattler_zero_modes"] = rattler_zero_modes;
     s["jam_seconds"] = jam_seconds;
     s["fire_iterations"] = r.fire_iterations;
-    s["zero_modes_without_rattlers"] = zero - 3 * rattlers;
-    s["pressure_reached"] = r.states.back().pressure;
-    s["phi"] = r.states.back().phi;
+    s["zero_modes_without_rattlers"] = zero - rattler_zero_modes;
+    s["force_max"] = force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
+    s["pressure_reached"] = pressure(stress_tensor(r.system, r.x)) / r.pressure_unit;
+    s["phi"] = packing_fraction(r.system, r.x);
 }
 
 void run_modes(const Parameters& p, RunContext& context)
@@ -263,7 +273,9 @@ std::vector<ParameterSpec> modes_parameters()
         ParameterSpec::real("kl_surface", 0.0, "k_a a0",
                             "edge stiffness of the surface-tension particle (Table 9.1: ~0)")
             .non_negative(),
-        ParameterSpec::real("zero_threshold", 1e-13, "k_a a0", "zero mode: lambda~ below this (Fig. 9.14a)")
+        ParameterSpec::real("zero_threshold", 1e-13, "k_a a0",
+                            "zero mode: lambda~ below this (Fig. 9.14a), or below the round-off bound n eps "
+                            "max|lambda~| where that is larger (summary zero_threshold_used)")
             .positive(),
         ParameterSpec::integer("seed", 1, "1", "seed of the random start of a floppy particle")
             .non_negative(),

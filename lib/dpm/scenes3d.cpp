@@ -69,8 +69,9 @@ std::vector<ParameterSpec> shape3d_parameters()
 
 namespace {
 
-// Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns the number of zero modes.
-int write_spectrum(const Eigen::VectorXd& lambda, double threshold, RunContext& context)
+// Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns the number of zero modes: below
+// zero_threshold, or below the round-off bound where that is larger (zero_mode_threshold).
+int write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunContext& context)
 {
     auto& spectrum =
         context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
@@ -78,9 +79,11 @@ int write_spectrum(const Eigen::VectorXd& lambda, double threshold, RunContext& 
                                           {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
     for (Eigen::Index i = 0; i < lambda.size(); ++i)
         spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
+    const double threshold = zero_mode_threshold(lambda, zero_threshold);
     const int zero = count_zero_modes(lambda, threshold);
     auto& s = context.summary();
     s["zero_modes"] = zero;
+    s["zero_threshold_used"] = threshold;
     s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
     s["lambda_smallest_nonzero"] =
         zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
@@ -106,7 +109,7 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
     auto& table = context.table(
         "mode_energy.dat", {{"k", "1", "mode index"},
                             {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k"},
-                            {"zero_mode", "1", "1 if lambda~_k < zero_threshold"},
+                            {"zero_mode", "1", "1 if lambda~_k < zero_threshold_used"},
                             {"quartic", "1", "1 if Delta U(0.1 sigma) > 3 lambda dr^2/2 (quartic_modes)"},
                             {"dr", "v0^(1/3)", "amplitude Delta r along the unit eigenvector"},
                             {"dU", "k_v v0^2", "Delta U = U(x + dr e_k) - U(x)"}});
@@ -190,14 +193,13 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, g, h);
     };
-    const double force_max = polish_newton(energy, j.x, 1e-14 * j.pressure_unit, 30);
+    const double force_max = polish_for_modes(energy, j.x, j.pressure_unit);
 
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
     const Eigen::VectorXd lambda = solver.eigenvalues() / j.eigenvalue_unit;
-    const double threshold = p.real("zero_threshold");
-    const int zero = write_spectrum(lambda, threshold, context);
+    const int zero = write_spectrum(lambda, p.real("zero_threshold"), context);
 
     // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
     // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
@@ -213,15 +215,15 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
     const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
-    const int free_modes = o.model == ShapeModel::floppy ? j.system.meshes[0].vertex_count() + 3 : 6;
+    const int free_modes = free_particle_zero_modes(o.model, j.system.meshes[0].vertex_count(), 3);
     auto& s = context.summary();
     s["particles"] = o.particles;
     s["modes"] = lambda.size();
     s["rattlers"] = rattlers;
     s["zero_modes_without_rattlers"] = zero - free_modes * rattlers;
     s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
-    s["soft_modes"] =
-        static_cast<int>((lambda.array() >= p.real("zero_threshold") && lambda.array() < soft).count());
+    // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
+    s["soft_modes"] = std::max(0, count_zero_modes(lambda, soft) - zero);
     s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;
     s["phi"] = packing_fraction3d(j.system, j.x);
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
@@ -284,7 +286,8 @@ std::vector<ParameterSpec> modes3d_parameters()
         ParameterSpec::real("gamma", 0.01, "k_v v0^(5/3)", "surface tension gamma (surface_tension)")
             .positive(),
         ParameterSpec::real("zero_threshold", 1e-10, "k_v v0^(4/3)",
-                            "zero mode: lambda~ below this (Fig. 9.15a)")
+                            "zero mode: lambda~ below this (Fig. 9.15a), or below the round-off bound n eps "
+                            "max|lambda~| where that is larger (summary zero_threshold_used)")
             .positive(),
         ParameterSpec::integer(
             "seed", 1, "1",

@@ -39,14 +39,14 @@ inline JammedModes check_jammed3d(dpm::Jam3dResult& j, double pressure_onset)
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, gr, h);
     };
-    polish_newton(energy, j.x, 1e-14 * j.pressure_unit, 30);
+    polish_for_modes(energy, j.x, j.pressure_unit);
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
     const Eigen::VectorXd lambda =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues() /
         j.eigenvalue_unit;
     const std::vector<int> after = contact_counts3d(j.system, j.x);
-    const JammedModes modes{count_zero_modes(lambda, 1e-10),
+    const JammedModes modes{count_zero_modes(lambda, zero_mode_threshold(lambda, 1e-10)),
                             static_cast<int>(std::count(after.begin(), after.end(), 0))};
     MESSAGE("phi = " << j.phi << ", box steps " << j.box_steps << ", FIRE iterations " << j.fire_iterations
                      << ", rattlers " << modes.rattlers);
