@@ -433,24 +433,17 @@ void ShellModel::throw_overlap() const
 }
 
 namespace {
-// Runs `task`; an exception cannot leave a parallel region, so it is kept in `failure` and rethrown by the
-// caller after the region.
+// Runs `task` on one thread of a parallel region; an exception cannot leave the region, so it is kept in
+// `failure` and rethrown by the caller after the region.
 template <class Task>
-void keeping_failure(std::exception_ptr& failure, Task&& task)
+void on_one_thread(std::exception_ptr& failure, Task&& task)
 {
+#pragma omp single
     try {
         task();
     } catch (...) {
         failure = std::current_exception();
     }
-}
-
-// Runs `task` on one thread of a parallel region, the others waiting for it.
-template <class Task>
-void on_one_thread(std::exception_ptr& failure, Task&& task)
-{
-#pragma omp single
-    keeping_failure(failure, task);
 }
 
 // Sets flag to true from one thread of a region (flags only ever turn true within a region).
@@ -465,9 +458,7 @@ void raise_flag(bool& flag)
 // Each shell writes the forces of its own vertices only, each contact group its own records, and each vertex
 // gathers its contact forces in candidate order: the results do not depend on the number of threads, bit
 // for bit. Three barriers when the candidates stay: after the reset (the list check must be agreed on),
-// after the contacts, after the gather. When they are rebuilt (serial), one thread rebuilds while the
-// others start on the shells' internal forces, which do not read the candidates; a fourth barrier then
-// waits for both before the contacts.
+// after the contacts, after the gather.
 template <class BeforeVertex, class AfterVertex>
 void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& before, AfterVertex&& after)
 {
@@ -488,11 +479,10 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     }
     if (stale) raise_flag(flags.list_stale);
 #pragma omp barrier
-    if (flags.list_stale) {
-#pragma omp single nowait
-        keeping_failure(flags.failure, [&] { update_contact_candidates(); });
-    }
+    if (flags.list_stale) on_one_thread(flags.failure, [&] { update_contact_candidates(); });
+    if (flags.failure) return; // every thread sees it after the barrier of the single construct
     const int n_shells = static_cast<int>(shells_.size());
+    const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
 #pragma omp for schedule(dynamic, 4) nowait
     for (int p = 0; p < n_shells; ++p) {
         const Shell& s = shells_[p];
@@ -500,11 +490,6 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
         internal_forces(s);
         if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
     }
-    if (flags.list_stale) {
-#pragma omp barrier
-    }
-    if (flags.failure) return; // every thread sees it after the barrier
-    const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
     bool overlap = false;
 #pragma omp for schedule(static)
     for (long g = 0; g < n_groups; ++g)
