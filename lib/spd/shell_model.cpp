@@ -838,24 +838,22 @@ double ShellModel::kinetic_energy() const
     return K;
 }
 
+std::pair<Eigen::Index, double> ShellModel::largest_free_force() const
+{
+    std::pair<Eigen::Index, double> largest{0, 0.0};
+    for (Eigen::Index d = 0; d < f_.size(); ++d)
+        if (inverse_mass_[d] > 0 && std::abs(f_[d]) > largest.second) largest = {d, std::abs(f_[d])};
+    return largest;
+}
+
 double ShellModel::max_free_force() const
 {
-    double m = 0;
-    for (Eigen::Index d = 0; d < f_.size(); ++d)
-        if (inverse_mass_[d] > 0) m = std::max(m, std::abs(f_[d]));
-    return m;
+    return largest_free_force().second;
 }
 
 int ShellModel::max_free_force_vertex() const
 {
-    double m = -1;
-    int vertex = 0;
-    for (Eigen::Index d = 0; d < f_.size(); ++d)
-        if (inverse_mass_[d] > 0 && std::abs(f_[d]) > m) {
-            m = std::abs(f_[d]);
-            vertex = static_cast<int>(d / 2);
-        }
-    return vertex;
+    return static_cast<int>(largest_free_force().first / 2);
 }
 
 std::string ShellModel::describe_vertex(int i) const
@@ -936,13 +934,13 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
     // step is taken to see it): the period-2 mode of a contact configuration above its limit (decision
     // spd-vertex-pair-stability) rather than a slow approach to rest.
     const int i = model.max_free_force_vertex();
+    const double residual = model.max_free_force();
     const Vec2 before = model.force(i);
     model.step(dt, damping);
     const bool reverses = model.force(i).dot(before) < -0.5 * before.squaredNorm();
     std::ostringstream cause;
-    cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force "
-          << before.cwiseAbs().maxCoeff() << " N > tolerance " << force_tolerance << " N, on "
-          << model.describe_vertex(i) << ")";
+    cause << "relaxation not reached in " << max_steps << " steps (largest unbalanced force " << residual
+          << " N > tolerance " << force_tolerance << " N, on " << model.describe_vertex(i) << ")";
     if (reverses)
         cause << ": its force reverses at every step, the period-2 oscillation of the scheme: dt = "
               << dt / model.critical_time_step()

@@ -23,6 +23,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softgrain {
@@ -214,6 +215,8 @@ class ShellModel
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
     void update_contact_candidates();
     int shell_of(int vertex) const { return shell_of_[vertex]; }
+    // The free degree of freedom with the largest |f| (damping excluded) and that |f|.
+    std::pair<Eigen::Index, double> largest_free_force() const;
     void add_force(int i, const Vec2& F)
     {
         f_[2 * i] += F.x();
