@@ -206,24 +206,28 @@ ModeParts normalised(ModeParts parts)
     return parts;
 }
 
+// The parts of a mode summed over the particles (each a block of `count` vertices from `first`), normalised.
+template <int Dim, class Particles>
+ModeParts decompose_mode_of(const Particles& particles, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+{
+    ModeParts parts;
+    for (const auto& p : particles)
+        add_particle_mode_parts<Dim>(x.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
+                                     mode.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
+                                     parts);
+    return normalised(parts);
+}
+
 } // namespace
 
 ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
 {
-    ModeParts parts;
-    for (const Particle& p : system.particles)
-        add_particle_mode_parts<2>(x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count),
-                                   mode.segment(2 * p.first, 2 * p.count).reshaped(2, p.count), parts);
-    return normalised(parts);
+    return decompose_mode_of<2>(system.particles, x, mode);
 }
 
 ModeParts decompose_mode(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
 {
-    ModeParts parts;
-    for (const Particle3d& p : system.particles)
-        add_particle_mode_parts<3>(x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count),
-                                   mode.segment(3 * p.first, 3 * p.count).reshaped(3, p.count), parts);
-    return normalised(parts);
+    return decompose_mode_of<3>(system.particles, x, mode);
 }
 
 bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
