@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace softgrain {
 
@@ -19,8 +21,8 @@ FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_fo
     int downhill_steps = 0;
     for (result.iterations = 0; result.iterations < options.max_iterations; ++result.iterations) {
         result.force_rms = std::sqrt(f.squaredNorm() / dofs);
-        const double kinetic = 0.5 * v.squaredNorm() / dofs;
-        if (result.force_rms < options.force_tolerance && kinetic < options.kinetic_tolerance) {
+        result.kinetic = 0.5 * v.squaredNorm() / dofs;
+        if (result.force_rms < options.force_tolerance && result.kinetic < options.kinetic_tolerance) {
             result.converged = true;
             return result;
         }
@@ -45,7 +47,17 @@ FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_fo
         v += 0.5 * dt * f;
     }
     result.force_rms = std::sqrt(f.squaredNorm() / dofs);
+    result.kinetic = 0.5 * v.squaredNorm() / dofs;
     return result;
+}
+
+std::string fire_shortfall(const FireResult& result, const FireOptions& options)
+{
+    std::ostringstream out;
+    out << std::setprecision(3) << "FIRE stopped after " << result.iterations << " iterations: force rms "
+        << result.force_rms << " (tolerance " << options.force_tolerance << "), kinetic energy "
+        << result.kinetic << " per degree of freedom (tolerance " << options.kinetic_tolerance << ")";
+    return out.str();
 }
 
 } // namespace softgrain

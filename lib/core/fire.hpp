@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <string>
 
 namespace softgrain {
 
@@ -35,6 +36,7 @@ struct FireResult
     long iterations = 0;
     double energy = 0;
     double force_rms = 0;
+    double kinetic = 0; // kinetic energy per degree of freedom at the end
 };
 
 // energy_and_force(x, f) returns U(x) and writes f = -grad U(x).
@@ -42,5 +44,10 @@ using EnergyAndForce = std::function<double(const Eigen::VectorXd&, Eigen::Vecto
 
 FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_force,
                          const FireOptions& options);
+
+// Why a relaxation stopped unconverged, for a diagnosis: the iterations and both stopping quantities
+// against their tolerances, e.g. "FIRE stopped after 1000000 iterations: force rms 3.2e-12 (tolerance
+// 1e-11), kinetic energy 4.1e-19 per degree of freedom (tolerance 1e-20)".
+std::string fire_shortfall(const FireResult& result, const FireOptions& options);
 
 } // namespace softgrain

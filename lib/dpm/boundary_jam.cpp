@@ -133,7 +133,9 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
         s.particles.back().shape.a0 *= (1 - step) * (1 - step); // A0 unchanged
         const FireResult r = relax_fire(s, x, fire);
         out.iterations += r.iterations;
-        if (!r.converged) throw NumericalError("FIRE in the boundary", k, "time step too large");
+        if (!r.converged)
+            throw NumericalError("relaxation in the boundary (" + fire_shortfall(r, fire) + ")", k,
+                                 "time step too large");
         if (r.energy > 2 * energy_target) { // overshoot: undo, halve
             x = x_before;
             s.particles.back().shape = shape_before;

@@ -110,7 +110,7 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
             fire);
         out.iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError("FIRE in the box (force rms " + std::to_string(r.force_rms) + ")", step,
+            throw NumericalError("relaxation in the box (" + fire_shortfall(r, fire) + ")", step,
                                  "time step too large for the stiffest term");
         BoxState state{x, w, h, 0, 0};
         energy_in_box(s, x, w, h, nullptr, &state.pressure_x, &state.pressure_y);

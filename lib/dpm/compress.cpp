@@ -75,9 +75,8 @@ CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& b
             fire);
         out.iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError("FIRE relaxation between the plates (force rms " +
-                                     std::to_string(r.force_rms) + ")",
-                                 s, "step too large for the body's stiffness");
+            throw NumericalError("relaxation between the plates (" + fire_shortfall(r, fire) + ")", s,
+                                 "step too large for the body's stiffness");
         double force = 0;
         int contacts = 0;
         plates.energy(x, nullptr, &force, &contacts);

@@ -108,9 +108,9 @@ JamResult jam(const JamOptions& o)
         const FireResult r = rough_disks ? relax_rigid_fire(s, out.x, fire) : relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError(
-                "FIRE relaxation during compression (force rms " + std::to_string(r.force_rms) + ")",
-                step_index, "force tolerance too small for the pressure; raise pressure_onset");
+            throw NumericalError("relaxation during compression (" + fire_shortfall(r, fire) + ")",
+                                 step_index,
+                                 "force tolerance too small for the pressure; raise pressure_onset");
         return r.iterations;
     };
     const auto current_pressure = [&] {

@@ -128,9 +128,9 @@ Jam3dResult jam3d(const Jam3dOptions& o)
         const FireResult r = relax_fire3d(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError(
-                "FIRE relaxation during 3D compression (force rms " + std::to_string(r.force_rms) + ")",
-                step_index, "force tolerance too small for the pressure; raise pressure_onset");
+            throw NumericalError("relaxation during 3D compression (" + fire_shortfall(r, fire) + ")",
+                                 step_index,
+                                 "force tolerance too small for the pressure; raise pressure_onset");
         return r.iterations;
     };
     const auto current_pressure = [&] { return pressure3d(stress_tensor3d(s, out.x)) / out.pressure_unit; };

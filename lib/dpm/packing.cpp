@@ -61,9 +61,9 @@ Packing jam_packing(const PackingOptions& o)
         const FireResult r = relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError(
-                "FIRE relaxation during compression (force rms " + std::to_string(r.force_rms) + ")",
-                out.compression_steps, "too large a compression step for the FIRE time step");
+            throw NumericalError("relaxation during compression (" + fire_shortfall(r, fire) + ")",
+                                 out.compression_steps,
+                                 "too large a compression step for the FIRE time step");
         const double per_particle = r.energy / o.particles;
         if (per_particle > 2 * o.energy_onset) { // overshoot: undo and halve the step
             out.x = saved_x;

@@ -68,10 +68,9 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o)
         const FireResult r = relax_fire(s, x, jammed.fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError(
-                "FIRE relaxation after a compression step of Delta phi = " + std::to_string(o.dphi) +
-                    " (force rms " + std::to_string(r.force_rms) + ")",
-                step, "force tolerance too small for the pressure; raise pressure_onset");
+            throw NumericalError("relaxation after a compression step of Delta phi = " +
+                                     std::to_string(o.dphi) + " (" + fire_shortfall(r, jammed.fire) + ")",
+                                 step, "force tolerance too small for the pressure; raise pressure_onset");
     };
     const auto state_of = [&](const Eigen::VectorXd& x) {
         return PackingState{packing_fraction(s, x), pressure(stress_tensor(s, x)) / jammed.pressure_unit, x,

@@ -100,9 +100,8 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
     system.interaction = o.interaction;
     result.iterations += rest.iterations;
     if (!rest.converged)
-        throw NumericalError("FIRE relaxation of the rest shapes (force rms " +
-                                 std::to_string(rest.force_rms) + ")",
-                             0, "stiff shape terms; lower dt_max");
+        throw NumericalError("relaxation of the rest shapes (" + fire_shortfall(rest, fire) + ")", 0,
+                             "stiff shape terms; lower dt_max");
     const auto ys = [&x](const Particle& q) {
         return x.segment(2 * q.first, 2 * q.count).reshaped(2, q.count).row(1);
     };
@@ -126,9 +125,8 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
         const FireResult relaxed = relax_fire(system, x, fire);
         result.iterations += relaxed.iterations;
         if (!relaxed.converged)
-            throw NumericalError("FIRE relaxation of the shear step (force rms " +
-                                     std::to_string(relaxed.force_rms) + ")",
-                                 step, "stiff shape terms against soft contacts; lower dt_max");
+            throw NumericalError("relaxation of the shear step (" + fire_shortfall(relaxed, fire) + ")", step,
+                                 "stiff shape terms against soft contacts; lower dt_max");
         const ContactForce force = contact_force_on_mu(system, x);
         ShearSample sample;
         sample.x_over_d = (system.anchors[3].position.x() - beta_mid) / result.d_beta;

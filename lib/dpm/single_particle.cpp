@@ -26,8 +26,7 @@ SingleParticle single_particle_equilibrium(ShapeModel model, int n, double a0, d
     const FireResult relaxed = relax_fire(out.system, out.x, fire);
     out.fire_iterations = relaxed.iterations;
     if (!relaxed.converged)
-        throw NumericalError("FIRE relaxation of a single particle (force rms " +
-                                 std::to_string(relaxed.force_rms) + ")",
+        throw NumericalError("relaxation of a single particle (" + fire_shortfall(relaxed, fire) + ")",
                              relaxed.iterations, "stiffnesses too disparate for the FIRE step dt_max = 0.05");
     const int newton_steps = 30;
     out.force_max = polish_newton(out.system, out.x, 1e-14, newton_steps);

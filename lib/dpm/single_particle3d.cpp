@@ -62,7 +62,8 @@ SingleParticle3d single_particle3d_equilibrium(ShapeModel model, const TriangleM
         },
         options);
     if (!fire.converged)
-        throw NumericalError("FIRE relaxation of the 3D particle", fire.iterations,
+        throw NumericalError("relaxation of the 3D particle (" + fire_shortfall(fire, options) + ")",
+                             fire.iterations,
                              "no equilibrium within max_iterations (stiffness ratios too extreme?)");
     p.fire_iterations = fire.iterations;
     p.force_max = polish_newton(energy, p.x, 1e-14, 30);

@@ -2,6 +2,9 @@
 #include "core/fire.hpp"
 #include "support/tolerance.hpp"
 
+#include <cmath>
+#include <string>
+
 using namespace softgrain;
 using softgrain::verification::Tolerance;
 
@@ -50,9 +53,10 @@ TEST_CASE("FIRE reaches the minimum (1, 1) of the Rosenbrock function")
 
 TEST_CASE("FIRE reports non-convergence when the iteration budget is exhausted")
 {
+    // A constant force 2.5e-9 per degree of freedom (no minimum), above the force tolerance 1e-10.
     const EnergyAndForce slope = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-        f.setConstant(1.0); // a constant force: no minimum
-        return -x.sum();
+        f.setConstant(2.5e-9);
+        return -2.5e-9 * x.sum();
     };
     Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
     FireOptions options;
@@ -60,4 +64,12 @@ TEST_CASE("FIRE reports non-convergence when the iteration budget is exhausted")
     const FireResult result = fire_minimise(x, slope, options);
     CHECK_FALSE(result.converged);
     CHECK(result.iterations == 100);
+    CHECK(result.force_rms == doctest::Approx(2.5e-9).epsilon(1e-14));
+    // Always downhill: the velocity only grows, 0.5 |v|^2 / 3 with v_i >= 100 dt_initial f_i.
+    CHECK(result.kinetic >= 0.5 * std::pow(100 * options.dt_initial * 2.5e-9, 2));
+
+    // The diagnosis prints small values in scientific notation, not as 0.000000.
+    const std::string why = fire_shortfall(result, options);
+    CHECK(why.find("after 100 iterations: force rms 2.5e-09 (tolerance 1e-10)") != std::string::npos);
+    CHECK(why.find("(tolerance 1e-20)") != std::string::npos);
 }
