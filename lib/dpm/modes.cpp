@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -218,7 +219,55 @@ ModeParts decompose_mode_of(const Particles& particles, const Eigen::VectorXd& x
     return normalised(parts);
 }
 
+// The zero-mode subspace orthogonal to the uniform translations, as an orthonormal basis (columns).
+template <int Dim>
+Eigen::MatrixXd nontrivial_zero_mode_basis(const Eigen::MatrixXd& zero_modes)
+{
+    const Eigen::Index n = zero_modes.rows();
+    Eigen::MatrixXd translations = Eigen::MatrixXd::Zero(n, Dim);
+    for (Eigen::Index i = 0; i < n; ++i)
+        translations(i, i % Dim) = 1.0 / std::sqrt(static_cast<double>(n / Dim));
+    const Eigen::MatrixXd rest = zero_modes - translations * (translations.transpose() * zero_modes);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(rest, Eigen::ComputeThinU);
+    const auto kept = (svd.singularValues().array() > 0.5).count();
+    return svd.matrixU().leftCols(kept);
+}
+
+template <int Dim, class Particles>
+std::vector<ModeParts> nontrivial_zero_mode_parts_of(const Particles& particles, const Eigen::VectorXd& x,
+                                                     const Eigen::MatrixXd& zero_modes, int& dimension_out)
+{
+    const Eigen::MatrixXd basis = nontrivial_zero_mode_basis<Dim>(zero_modes);
+    dimension_out = static_cast<int>(basis.cols());
+    std::vector<ModeParts> parts(particles.size());
+    for (std::size_t m = 0; m < particles.size(); ++m) {
+        const auto& p = particles[m];
+        for (Eigen::Index k = 0; k < basis.cols(); ++k)
+            add_particle_mode_parts<Dim>(
+                x.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
+                basis.col(k).segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count), parts[m]);
+        if (dimension_out > 0) {
+            parts[m].translation /= dimension_out;
+            parts[m].rotation /= dimension_out;
+            parts[m].deformation /= dimension_out;
+        }
+    }
+    return parts;
+}
+
 } // namespace
+
+std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x,
+                                                  const Eigen::MatrixXd& zero_modes, int& dimension_out)
+{
+    return nontrivial_zero_mode_parts_of<2>(system.particles, x, zero_modes, dimension_out);
+}
+
+std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem3d& system, const Eigen::VectorXd& x,
+                                                  const Eigen::MatrixXd& zero_modes, int& dimension_out)
+{
+    return nontrivial_zero_mode_parts_of<3>(system.particles, x, zero_modes, dimension_out);
+}
 
 ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
 {

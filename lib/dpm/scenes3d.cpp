@@ -164,6 +164,28 @@ void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
     s[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(zero);
 }
 
+// Where the zero modes beyond the 3 uniform translations live (nontrivial_zero_mode_parts), particle by
+// particle, with its vertex contacts: table zero_modes.dat; summary nontrivial_zero_modes, the dimension of
+// that subspace.
+void write_zero_mode_parts3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
+                             const Eigen::MatrixXd& zero_modes, const std::vector<int>& contacts,
+                             RunContext& context)
+{
+    int dimension = 0;
+    const std::vector<ModeParts> parts = nontrivial_zero_mode_parts(system, x, zero_modes, dimension);
+    auto& table =
+        context.table("zero_modes.dat",
+                      {{"particle", "1", "particle index (the first half small)"},
+                       {"contacts", "1", "vertex contacts of the particle"},
+                       {"translation", "1", "share of the non-trivial zero modes in its rigid translation"},
+                       {"rotation", "1", "share in its rigid rotation"},
+                       {"deformation", "1", "share in its deformation"}});
+    for (std::size_t m = 0; m < parts.size(); ++m)
+        table.row(
+            {double(m), double(contacts[m]), parts[m].translation, parts[m].rotation, parts[m].deformation});
+    context.summary()["nontrivial_zero_modes"] = dimension;
+}
+
 // Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
 // residual force f shifts the zero modes by ~f R).
 void run_packing_modes3d(const Parameters& p, RunContext& context)
@@ -216,6 +238,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
     const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
     const int free_modes = free_particle_zero_modes(o.model, j.system.meshes[0].vertex_count(), 3);
+    write_zero_mode_parts3d(j.system, j.x, modes.leftCols(zero), contacts, context);
     auto& s = context.summary();
     s["particles"] = o.particles;
     s["modes"] = lambda.size();

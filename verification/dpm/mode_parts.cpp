@@ -7,6 +7,7 @@
 #include "support/tolerance.hpp"
 
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <numbers>
 
 using namespace softgrain;
@@ -109,6 +110,51 @@ TEST_CASE("3D mode decomposition returns the shares of known translation, rotati
     deformation.normalize();
     // Sums of O(40) terms of order 1 and a 3 x 3 solve: round-off of a few hundred ulp.
     check_shares(s, x, translation, rotation, deformation, Tolerance{0, 1000 * round_off});
+}
+
+TEST_CASE("the zero modes beyond the uniform translations are located on the particle that carries them, "
+          "in any basis [DPM Fig. 9.15b]")
+{
+    // Three icosahedra (12 vertices each, 36 in all). Zero modes: the 3 uniform translations of the
+    // packing, the rigid rotation of particle 1 about an axis through its centre (a particle free to turn
+    // about the line through its contacts) and the 3 rigid translations of particle 2 (a rattler's), mixed
+    // by a random orthogonal matrix: the result must not depend on the basis.
+    DpmSystem3d s;
+    Eigen::VectorXd x;
+    s.meshes.push_back(mesh_from_name("icosahedron"));
+    const Eigen::Matrix3Xd& unit = s.meshes[0].vertices;
+    const Eigen::Vector3d centres[] = {{0, 0, 0}, {3, 0.5, -1}, {-2, 2.5, 1}};
+    for (const Eigen::Vector3d& c : centres)
+        s.add_particle(0, unit.colwise() + c, 1.0, ShapeParameters3d{}, x);
+    const Eigen::Index n = x.size();
+    Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, 7);
+    for (Eigen::Index i = 0; i < n; ++i)
+        zero(i, i % 3) = 1.0; // uniform translations
+    const Eigen::Vector3d axis = Eigen::Vector3d(0.2, -1.0, 0.4).normalized();
+    for (int v = 0; v < 12; ++v) {
+        zero.block<3, 1>(3 * (12 + v), 3) = axis.cross(Eigen::Vector3d(unit.col(v)));
+        for (int d = 0; d < 3; ++d)
+            zero(3 * (24 + v) + d, 4 + d) = 1.0;
+    }
+    const Eigen::MatrixXd orthonormal =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(zero).householderQ() * Eigen::MatrixXd::Identity(n, 7);
+    const Eigen::MatrixXd mixing =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(7, 7)).householderQ();
+    int dimension = 0;
+    const std::vector<ModeParts> parts = nontrivial_zero_mode_parts(s, x, orthonormal * mixing, dimension);
+    CHECK(dimension == 4);
+    const Tolerance exact{0, 1000 * round_off};
+    // Particle 1: its rotation, one of 4 basis vectors. Particle 2: a translation e of it (norm 1) made
+    // orthogonal to the uniform one t has e.t = sqrt(12/36), norm^2 1 - 1/3, and per vertex (1 -
+    // 1/3)/sqrt(12) on particle 2 and -1/(6 sqrt(3)) on the others: shares 2/3 on particle 2 and 1/6 on each
+    // other particle, times 3 of the 4 basis vectors.
+    CHECK_CLOSE(parts[1].rotation, 0.25, exact);
+    CHECK_CLOSE(parts[2].translation, 3 * (2.0 / 3) / 4, exact);
+    CHECK_CLOSE(parts[0].translation, 3 * (1.0 / 6) / 4, exact);
+    CHECK_CLOSE(parts[1].translation, 3 * (1.0 / 6) / 4, exact);
+    for (const ModeParts& p : parts)
+        CHECK_CLOSE(p.deformation, 0.0, exact);
+    CHECK_CLOSE(parts[0].rotation + parts[2].rotation, 0.0, exact);
 }
 
 TEST_CASE("a harmonic energy has no quartic modes; a mode with Delta U above 3 lambda dr^2/2 is quartic "
