@@ -25,7 +25,17 @@ ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x
 
 int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold)
 {
-    return static_cast<int>((eigenvalues.array() < threshold).count());
+    return static_cast<int>((eigenvalues.array().abs() < threshold).count());
+}
+
+int count_negative_modes(const Eigen::VectorXd& eigenvalues, double threshold)
+{
+    return static_cast<int>((eigenvalues.array() <= -threshold).count());
+}
+
+SpectrumCounts count_modes(const Eigen::VectorXd& eigenvalues, double threshold)
+{
+    return {count_negative_modes(eigenvalues, threshold), count_zero_modes(eigenvalues, threshold)};
 }
 
 double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold)
@@ -119,6 +129,56 @@ double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x,
 double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit)
 {
     return polish_newton(system, x, 1e-14 * force_unit, 30);
+}
+
+namespace {
+
+// Moves x along the unit mode e of eigenvalue lambda < 0 to the lower of U(x +- a e) for the first
+// amplitude that lowers the energy by more than round-off: from the one where the harmonic drop
+// |lambda| a^2/2 is 100 times the round-off floor, tenfold up to 0.1 length units; false if none does (a
+// negative curvature too weak against the quartic terms to lower U measurably).
+bool step_down_along(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, const Eigen::VectorXd& e,
+                     double lambda)
+{
+    // U is a sum of non-negative terms, each exact to a few ulp: its round-off is relative to U itself.
+    const double u0 = energy(x, nullptr, nullptr);
+    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::abs(u0);
+    for (double a = std::min(0.1, std::sqrt(200 * floor / std::abs(lambda))); a <= 0.1 * (1 + 1e-12);
+         a *= 10) {
+        const double up = energy(x + a * e, nullptr, nullptr), down = energy(x - a * e, nullptr, nullptr);
+        if (std::min(up, down) < u0 - floor) {
+            x += (up < down ? a : -a) * e;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+MinimumSettling settle_at_minimum(const EnergyWithDerivatives& energy,
+                                  const std::function<void(Eigen::VectorXd&)>& relax, Eigen::VectorXd& x,
+                                  double force_unit, double eigenvalue_unit, double zero_threshold,
+                                  int attempts)
+{
+    MinimumSettling out;
+    out.force_max = polish_for_modes(energy, x, force_unit);
+    for (;;) {
+        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+        energy(x, nullptr, &m);
+        const Eigen::VectorXd lambda =
+            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues() /
+            eigenvalue_unit;
+        out.lowest_eigenvalue = lambda(0);
+        if (count_negative_modes(lambda, zero_mode_threshold(lambda, zero_threshold)) == 0 ||
+            out.saddle_escapes == attempts)
+            return out;
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+        if (!step_down_along(energy, x, solver.eigenvectors().col(0), solver.eigenvalues()(0))) return out;
+        relax(x);
+        out.force_max = polish_for_modes(energy, x, force_unit);
+        ++out.saddle_escapes;
+    }
 }
 
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,

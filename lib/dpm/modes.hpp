@@ -28,8 +28,18 @@ struct ModeSpectrum
 Eigen::MatrixXd dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x);
 ModeSpectrum vibrational_modes(const DpmSystem& system, const Eigen::VectorXd& x);
 
-// Number of eigenvalues below the threshold (in the same units).
+// Number of zero modes, |lambda| below the threshold, and of negative modes, lambda below minus it (an
+// instability: the state is a saddle, not a minimum; decision dpm-packing-minimum). Same units.
 int count_zero_modes(const Eigen::VectorXd& eigenvalues, double threshold);
+int count_negative_modes(const Eigen::VectorXd& eigenvalues, double threshold);
+// Both for an ascending spectrum: the negative modes come first, then the zero ones, then the positive
+// ones from index first_positive().
+struct SpectrumCounts
+{
+    int negative = 0, zero = 0;
+    int first_positive() const { return negative + zero; }
+};
+SpectrumCounts count_modes(const Eigen::VectorXd& eigenvalues, double threshold);
 // The threshold a zero mode is counted against (decision dpm-zero-mode-count): the paper's threshold, or
 // n eps max|lambda| where that is larger. A backward-stable dense eigensolver returns each eigenvalue of the
 // n x n symmetric M to within p(n) eps ||M||_2 (Weyl's inequality with the backward error of the symmetric
@@ -114,6 +124,28 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
 // held by one contact of vanishing force is not yet a rattler.
 double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit);
 double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit);
+
+// The spectrum of a packing is taken at a minimum of its energy (decision dpm-packing-minimum). FIRE stops
+// on the force alone and can stop beside a saddle: a 16 x 42 shell packing stopped with one particle
+// (7 contacts) on a rotation of negative curvature, lambda~ = -2.2e-8, which the Newton polish cannot
+// remove (it steps only along the positive modes) and which a count of lambda < threshold took for a 4th
+// zero mode. settle_at_minimum polishes (polish_for_modes); then, while the lowest eigenvalue lies below
+// minus the zero threshold (zero_mode_threshold(eigenvalues / eigenvalue_unit, zero_threshold)), at most
+// `attempts` times: it moves x along that mode to the lower of U(x +- a e) for the first amplitude that
+// lowers the energy beyond round-off (from where the harmonic drop |lambda| a^2/2 is 100 times round-off,
+// tenfold up to 0.1 length units), relaxes (`relax`: the protocol's FIRE) and polishes again. Returned: the
+// largest force reached, the escapes made and the lowest eigenvalue at the end (in eigenvalue_unit; below
+// minus the threshold if the packing is still a saddle).
+struct MinimumSettling
+{
+    double force_max = 0;
+    int saddle_escapes = 0;
+    double lowest_eigenvalue = 0;
+};
+MinimumSettling settle_at_minimum(const EnergyWithDerivatives& energy,
+                                  const std::function<void(Eigen::VectorXd&)>& relax, Eigen::VectorXd& x,
+                                  double force_unit, double eigenvalue_unit, double zero_threshold,
+                                  int attempts = 4);
 
 // U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,

@@ -21,7 +21,8 @@ namespace {
 // Fig. 9.5(c, d): every non-zero mode of a packing of deformable particles split into rigid translations,
 // rotations and deformations (decompose_mode), classified quartic or quadratic by Delta U (is_quartic_mode);
 // the lowest-frequency quartic mode and the highest-frequency mode are written as fields over the packing.
-void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double unit, int zero,
+// The positive modes start at index first_positive (SpectrumCounts).
+void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double unit, int first_positive,
                       RunContext& context)
 {
     const ModeSpectrum modes = vibrational_modes(system, x);
@@ -36,7 +37,7 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
                                  {"participation_ratio", "1", "(sum |u_i|^2)^2 / (N sum |u_i|^4)"}});
     int quartic_count = 0, quartic_mixing = 0, quadratic_count = 0, quadratic_mixing = 0;
     Eigen::Index quartic_lowest = -1;
-    for (Eigen::Index m = zero; m < modes.eigenvalues.size(); ++m) {
+    for (Eigen::Index m = first_positive; m < modes.eigenvalues.size(); ++m) {
         const Eigen::VectorXd u = modes.eigenvectors.col(m);
         const ModeParts parts = decompose_mode(system, x, u);
         const bool quartic = is_quartic_mode(system, x, u, modes.eigenvalues(m), 0.1, 3.0);
@@ -90,7 +91,7 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
              {"_mode_index", "_lambda", "_translation", "_rotation", "_deformation", "_participation_ratio"})
             s[std::string(prefix) + part] = nullptr;
     if (quartic_lowest >= 0) write_field(0, quartic_lowest, "quartic");
-    if (zero < modes.eigenvalues.size()) write_field(1, modes.eigenvalues.size() - 1, "quadratic");
+    if (first_positive < modes.eigenvalues.size()) write_field(1, modes.eigenvalues.size() - 1, "quadratic");
 }
 
 } // namespace
@@ -106,16 +107,18 @@ nlohmann::json median_or_null(std::vector<double> values)
 
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
 // keys common to single particles and packings. Zero modes: below zero_threshold, or below the round-off
-// bound where that is larger (zero_mode_threshold). Returns the number of zero modes.
-int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit, double zero_threshold,
-                   RunContext& context)
+// bound where that is larger (zero_mode_threshold), in magnitude; below minus that, negative modes (a
+// saddle, decision dpm-packing-minimum). Returns the counts.
+SpectrumCounts write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
+                              double zero_threshold, RunContext& context)
 {
     const auto started = std::chrono::steady_clock::now();
     const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
     const double spectrum_seconds = seconds_since(started);
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
     const double threshold = zero_mode_threshold(lambda, zero_threshold);
-    const int zero = count_zero_modes(lambda, threshold);
+    const SpectrumCounts counts = count_modes(lambda, threshold);
+    const int positive = counts.first_positive();
 
     auto& spectrum =
         context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
@@ -137,18 +140,18 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
         const Eigen::VectorXd e = modes.eigenvectors.col(m);
         for (int s = 0; s <= 24; ++s) {
             const double dr = std::pow(10.0, -3.0 + s / 8.0);
-            along.row({double(m + 1), lambda(m), lambda(m) < threshold ? 1.0 : 0.0, dr,
+            along.row({double(m + 1), lambda(m), m < positive ? 1.0 : 0.0, dr,
                        energy_change_along(system, x, e, dr)});
         }
         const double exponent = local_exponent(energy_change_along(system, x, e, 1e-3),
                                                energy_change_along(system, x, e, 2e-3), 1e-3, 2e-3, floor);
-        (lambda(m) < threshold ? zero_exponents : quadratic_exponents).push_back(exponent);
+        if (m >= counts.negative) (m < positive ? zero_exponents : quadratic_exponents).push_back(exponent);
     }
 
     auto& s = context.summary();
     // The lowest non-zero mode (Fig. 9.5b-d): its field and how many vertices it involves.
-    if (zero < lambda.size()) {
-        const Eigen::VectorXd u = modes.eigenvectors.col(zero);
+    if (positive < lambda.size()) {
+        const Eigen::VectorXd u = modes.eigenvectors.col(positive);
         auto& field = context.table("lowest_mode.dat",
                                     {{"x", "sqrt(a0) or sigma", "vertex position"},
                                      {"y", "sqrt(a0) or sigma", "vertex position"},
@@ -158,18 +161,20 @@ int write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double uni
             field.row({x(2 * i), x(2 * i + 1), u(2 * i), u(2 * i + 1)});
         s["participation_ratio_lowest"] = participation_ratio(u);
     }
-    s["zero_modes"] = zero;
+    s["zero_modes"] = counts.zero;
+    s["negative_modes"] = counts.negative;
     s["zero_threshold_used"] = threshold;
     s["degrees_of_freedom"] = x.size();
     s["spectrum_seconds"] = spectrum_seconds; // cost chart (dpm-cost), reported, never asserted
     s["lambda_smallest_nonzero"] =
-        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
-    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
+        positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
+    s["lambda_largest_zero"] =
+        counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
     s["lambda_max"] = lambda(lambda.size() - 1);
     s["energy"] = u0;
     s["zero_mode_exponent"] = median_or_null(zero_exponents);
     s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
-    return zero;
+    return counts;
 }
 
 // A jammed packing (dpm.jam protocol) at the requested pressure and its spectrum (Fig. 9.14b).
@@ -189,10 +194,17 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     JamResult r = jam(o);
     const double jam_seconds = seconds_since(started);
     context.count_steps(r.fire_iterations);
-    // Forces to round-off first, as in 3D (decision dpm-zero-mode-count): FIRE leaves ~1e-10 on rattlers.
-    const double force_max = polish_for_modes(r.system, r.x, r.pressure_unit);
-    const int zero = write_spectrum(r.system, r.x, r.pressure_unit, p.real("zero_threshold"), context);
-    if (o.model != "smooth_disk") write_mode_parts(r.system, r.x, r.pressure_unit, zero, context);
+    // At a minimum, as in 3D: forces to round-off (decision dpm-zero-mode-count: FIRE leaves ~1e-10 on
+    // rattlers) and off any saddle (decision dpm-packing-minimum).
+    const double zero_threshold = p.real("zero_threshold");
+    const MinimumSettling settled =
+        settle_at_minimum([&r](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                               Eigen::MatrixXd* h) { return total_energy(r.system, y, g, h); },
+                          [&r](Eigen::VectorXd& y) { relax_fire(r.system, y, r.fire); }, r.x, r.pressure_unit,
+                          r.pressure_unit, zero_threshold);
+    const SpectrumCounts counts = write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, context);
+    if (o.model != "smooth_disk")
+        write_mode_parts(r.system, r.x, r.pressure_unit, counts.first_positive(), context);
     // Rattlers: particles without any contact; each keeps the zero modes of a free particle (3 rigid
     // motions; a floppy polygon N_mu - 1; a disk its 2 translations, for which the model is not used).
     const ShapeModel model = o.model == "smooth_disk" ? ShapeModel::shell : shape_model_from_name(o.model);
@@ -206,8 +218,9 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     s["rattler_zero_modes"] = rattler_zero_modes;
     s["jam_seconds"] = jam_seconds;
     s["fire_iterations"] = r.fire_iterations;
-    s["zero_modes_without_rattlers"] = zero - rattler_zero_modes;
-    s["force_max"] = force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
+    s["zero_modes_without_rattlers"] = counts.zero - rattler_zero_modes;
+    s["force_max"] = settled.force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
+    s["saddle_escapes"] = settled.saddle_escapes;
     s["pressure_reached"] = pressure(stress_tensor(r.system, r.x)) / r.pressure_unit;
     s["phi"] = packing_fraction(r.system, r.x);
 }
@@ -241,7 +254,7 @@ void run_modes(const Parameters& p, RunContext& context)
     const double force = particle.force_max;
     context.count_steps(particle.fire_iterations);
 
-    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context);
+    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context).zero;
     auto& s = context.summary();
     s["zero_modes_nontrivial"] = zero - 3;
     s["A0_used"] = A0;

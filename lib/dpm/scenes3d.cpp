@@ -69,9 +69,9 @@ std::vector<ParameterSpec> shape3d_parameters()
 
 namespace {
 
-// Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns the number of zero modes: below
-// zero_threshold, or below the round-off bound where that is larger (zero_mode_threshold).
-int write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunContext& context)
+// Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns its counts: zero modes below
+// zero_threshold in magnitude, or below the round-off bound where that is larger (zero_mode_threshold).
+SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunContext& context)
 {
     auto& spectrum =
         context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
@@ -80,20 +80,24 @@ int write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunCont
     for (Eigen::Index i = 0; i < lambda.size(); ++i)
         spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
     const double threshold = zero_mode_threshold(lambda, zero_threshold);
-    const int zero = count_zero_modes(lambda, threshold);
+    const SpectrumCounts counts = count_modes(lambda, threshold);
+    const int positive = counts.first_positive();
     auto& s = context.summary();
-    s["zero_modes"] = zero;
+    s["zero_modes"] = counts.zero;
+    s["negative_modes"] = counts.negative;
     s["zero_threshold_used"] = threshold;
-    s["lambda_largest_zero"] = zero > 0 ? nlohmann::json(lambda(zero - 1)) : nlohmann::json(nullptr);
+    s["lambda_lowest"] = lambda(0);
+    s["lambda_largest_zero"] =
+        counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
     s["lambda_smallest_nonzero"] =
-        zero < lambda.size() ? nlohmann::json(lambda(zero)) : nlohmann::json(nullptr);
+        positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
     s["lambda_max"] = lambda(lambda.size() - 1);
     // The median non-zero eigenvalue: a quadratic (shape or contact) mode whenever the soft band holds
     // fewer than half of the modes (Fig. 9.15d-f).
-    s["lambda_median_nonzero"] = zero < lambda.size()
-                                     ? nlohmann::json(lambda(zero + (lambda.size() - zero) / 2))
+    s["lambda_median_nonzero"] = positive < lambda.size()
+                                     ? nlohmann::json(lambda(positive + (lambda.size() - positive) / 2))
                                      : nlohmann::json(nullptr);
-    return zero;
+    return counts;
 }
 
 // Fig. 9.15(c): Delta U = U(x + dr e_k) - U(x) along every unit eigenvector e_k of the packing at
@@ -103,8 +107,8 @@ int write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunCont
 // from quadratic to quartic at dr ~ sqrt(lambda~) <~ 1e-2 (U = lambda dr^2/2 + c dr^4 with c ~ 1); the
 // window lies a decade beyond (decision dpm-3d-quartic-window).
 void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult& j,
-                         const Eigen::VectorXd& lambda, const Eigen::MatrixXd& modes, int zero, double soft,
-                         const std::vector<bool>& quartic, RunContext& context)
+                         const Eigen::VectorXd& lambda, const Eigen::MatrixXd& modes, int first_positive,
+                         double soft, const std::vector<bool>& quartic, RunContext& context)
 {
     auto& table = context.table(
         "mode_energy.dat", {{"k", "1", "mode index"},
@@ -122,10 +126,10 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
     for (Eigen::Index k = 0; k < lambda.size(); ++k) {
         for (int s = 0; s <= 28; ++s) {
             const double dr = std::pow(10.0, -3.0 + s / 8.0);
-            table.row(
-                {double(k + 1), lambda(k), k < zero ? 1.0 : 0.0, quartic[k] ? 1.0 : 0.0, dr, change(k, dr)});
+            table.row({double(k + 1), lambda(k), k < first_positive ? 1.0 : 0.0, quartic[k] ? 1.0 : 0.0, dr,
+                       change(k, dr)});
         }
-        if (k < zero) continue;
+        if (k < first_positive) continue;
         small_exponents.push_back(local_exponent(change(k, 1e-3), change(k, 2e-3), 1e-3, 2e-3, floor));
         if (lambda(k) < soft)
             large_exponents.push_back(local_exponent(change(k, 0.1), change(k, 0.2), 0.1, 0.2, floor));
@@ -139,21 +143,21 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
 // of |e|^2 in rigid particle translations, rotations and deformations (decompose_mode), and the fraction
 // e.M_shape.e / lambda of its eigenvalue that comes from the shape energies (eq. 9.2) of the particles; the
 // rest, 1 minus it, is the contacts' (their stretching, positive, and their pre-stress, -f/r per contact
-// across its normal, negative). `zero` is the number of zero modes (the softest non-zero mode is column
-// `zero` of `modes`, eigenvalues ascending in the units of M); the keys are null if there is none.
+// across its normal, negative). The softest non-zero mode is column `first_positive` of `modes`
+// (eigenvalues ascending in the units of M, SpectrumCounts); the keys are null if there is none.
 void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
-                          const Eigen::VectorXd& eigenvalues, const Eigen::MatrixXd& modes, int zero,
-                          RunContext& context)
+                          const Eigen::VectorXd& eigenvalues, const Eigen::MatrixXd& modes,
+                          int first_positive, RunContext& context)
 {
     auto& s = context.summary();
     const char* keys[] = {"softest_mode_translation", "softest_mode_rotation", "softest_mode_deformation",
                           "softest_mode_shape_energy_fraction"};
-    if (zero >= eigenvalues.size()) {
+    if (first_positive >= eigenvalues.size()) {
         for (const char* key : keys)
             s[key] = nullptr;
         return;
     }
-    const Eigen::VectorXd mode = modes.col(zero);
+    const Eigen::VectorXd mode = modes.col(first_positive);
     const ModeParts parts = decompose_mode(system, x, mode);
     Eigen::MatrixXd shape_hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
     for (const Particle3d& p : system.particles)
@@ -161,7 +165,7 @@ void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
     s[keys[0]] = parts.translation;
     s[keys[1]] = parts.rotation;
     s[keys[2]] = parts.deformation;
-    s[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(zero);
+    s[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(first_positive);
 }
 
 // Where the zero modes beyond the 3 uniform translations live (nontrivial_zero_mode_parts), particle by
@@ -186,8 +190,9 @@ void write_zero_mode_parts3d(const DpmSystem3d& system, const Eigen::VectorXd& x
     context.summary()["nontrivial_zero_modes"] = dimension;
 }
 
-// Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
-// residual force f shifts the zero modes by ~f R).
+// Fig. 9.15(b): the spectrum of a jammed packing at P_t, taken at a minimum: Newton-polished to round-off
+// forces (a residual force f shifts the zero modes by ~f R) and moved off any saddle FIRE stopped beside
+// (settle_at_minimum, decision dpm-packing-minimum).
 void run_packing_modes3d(const Parameters& p, RunContext& context)
 {
     Jam3dOptions o;
@@ -215,44 +220,49 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, g, h);
     };
-    const double force_max = polish_for_modes(energy, j.x, j.pressure_unit);
+    const double zero_threshold = p.real("zero_threshold");
+    const MinimumSettling settled = settle_at_minimum(
+        energy, [&j](Eigen::VectorXd& y) { relax_fire3d(j.system, y, j.fire); }, j.x, j.pressure_unit,
+        j.eigenvalue_unit, zero_threshold);
 
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
     const Eigen::VectorXd lambda = solver.eigenvalues() / j.eigenvalue_unit;
-    const int zero = write_spectrum(lambda, p.real("zero_threshold"), context);
+    const SpectrumCounts counts = write_spectrum(lambda, zero_threshold, context);
+    const int positive = counts.first_positive();
 
     // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
     // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
     const auto& modes = solver.eigenvectors();
     std::vector<bool> quartic(lambda.size(), false);
-    for (Eigen::Index k = zero; k < lambda.size(); ++k)
+    for (Eigen::Index k = positive; k < lambda.size(); ++k)
         quartic[k] = quartic_energy_change(energy_change_along(energy, j.x, modes.col(k), 0.1),
                                            solver.eigenvalues()(k), 0.1, 3.0);
     const double soft = p.real("soft_threshold");
-    write_mode_energy3d(energy, j, lambda, modes, zero, soft, quartic, context);
-    write_softest_mode3d(j.system, j.x, solver.eigenvalues(), modes, zero, context);
+    write_mode_energy3d(energy, j, lambda, modes, positive, soft, quartic, context);
+    write_softest_mode3d(j.system, j.x, solver.eigenvalues(), modes, positive, context);
     // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
     // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
     const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
     const int free_modes = free_particle_zero_modes(o.model, j.system.meshes[0].vertex_count(), 3);
-    write_zero_mode_parts3d(j.system, j.x, modes.leftCols(zero), contacts, context);
+    write_zero_mode_parts3d(j.system, j.x, modes.middleCols(counts.negative, counts.zero), contacts, context);
     auto& s = context.summary();
     s["particles"] = o.particles;
     s["modes"] = lambda.size();
     s["rattlers"] = rattlers;
-    s["zero_modes_without_rattlers"] = zero - free_modes * rattlers;
+    s["zero_modes_without_rattlers"] = counts.zero - free_modes * rattlers;
     s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
     // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
-    s["soft_modes"] = std::max(0, count_zero_modes(lambda, soft) - zero);
+    s["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
     s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;
     s["phi"] = packing_fraction3d(j.system, j.x);
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
     s["box_steps"] = j.box_steps;
     s["fire_iterations"] = j.fire_iterations;
-    s["force_max"] = force_max / j.pressure_unit;
+    s["force_max"] = settled.force_max / j.pressure_unit;
+    s["saddle_escapes"] = settled.saddle_escapes;
 }
 
 } // namespace
@@ -279,11 +289,11 @@ void run_modes3d(const Parameters& p, RunContext& context)
     shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &m);
     const Eigen::VectorXd lambda =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
-    const int zero = write_spectrum(lambda, p.real("zero_threshold"), context);
+    const SpectrumCounts counts = write_spectrum(lambda, p.real("zero_threshold"), context);
 
     const Eigen::VectorXd& x = particle.x;
     auto& s = context.summary();
-    s["zero_modes_nontrivial"] = zero - 6;
+    s["zero_modes_nontrivial"] = counts.zero - 6;
     s["vertices"] = particle.mesh.vertex_count();
     s["A_mesh"] = particle.A_mesh;
     s["A0_used"] = particle.A0;

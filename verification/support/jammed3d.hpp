@@ -2,10 +2,11 @@
 //
 // check_jammed3d: the checks of a packing at the end of the jamming protocol, shared by the rough and smooth
 // jamming tests: 1 <= P/P_t < 1.01; FIRE's stopping rule (rms force below its tolerance); every particle in
-// contact. It then polishes the packing by Newton to round-off forces (a residual force f shifts the zero
-// modes by ~f R) and returns the zero modes of the dynamical matrix (eq. 9.28; the smallest non-zero
-// eigenvalue is ~1e-4 k_v v0^(4/3), the zero ones ~1e-16, threshold 1e-10 as Fig. 9.15a) and the rattlers,
-// for the caller's count (sec. 9.4.3: 3 periodic translations plus 6 per rattler).
+// contact. It then settles the packing at a minimum as dpm.modes3d does (settle_at_minimum: Newton to
+// round-off forces, since a residual force f shifts the zero modes by ~f R, and off any saddle), checks that
+// no negative mode is left and returns the zero modes of the dynamical matrix (eq. 9.28; the smallest
+// non-zero eigenvalue is ~1e-4 k_v v0^(4/3), the zero ones ~1e-16, threshold 1e-10 as Fig. 9.15a) and the
+// rattlers, for the caller's count (sec. 9.4.3: 3 periodic translations plus 6 per rattler).
 #pragma once
 
 #include "dpm/jam3d.hpp"
@@ -39,15 +40,18 @@ inline JammedModes check_jammed3d(dpm::Jam3dResult& j, double pressure_onset)
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, gr, h);
     };
-    polish_for_modes(energy, j.x, j.pressure_unit);
+    settle_at_minimum(
+        energy, [&j](Eigen::VectorXd& y) { relax_fire3d(j.system, y, j.fire); }, j.x, j.pressure_unit,
+        j.eigenvalue_unit, 1e-10);
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
     const Eigen::VectorXd lambda =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues() /
         j.eigenvalue_unit;
     const std::vector<int> after = contact_counts3d(j.system, j.x);
-    const JammedModes modes{count_zero_modes(lambda, zero_mode_threshold(lambda, 1e-10)),
-                            static_cast<int>(std::count(after.begin(), after.end(), 0))};
+    const SpectrumCounts counts = count_modes(lambda, zero_mode_threshold(lambda, 1e-10));
+    CHECK(counts.negative == 0);
+    const JammedModes modes{counts.zero, static_cast<int>(std::count(after.begin(), after.end(), 0))};
     MESSAGE("phi = " << j.phi << ", box steps " << j.box_steps << ", FIRE iterations " << j.fire_iterations
                      << ", rattlers " << modes.rattlers);
     return modes;
