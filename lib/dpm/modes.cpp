@@ -133,25 +133,27 @@ double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double forc
 
 namespace {
 
-// Moves x along the unit mode e of eigenvalue lambda < 0 to the lower of U(x +- a e) for the first
-// amplitude that lowers the energy by more than round-off: from the one where the harmonic drop
-// |lambda| a^2/2 is 100 times the round-off floor, tenfold up to 0.1 length units; false if none does (a
-// negative curvature too weak against the quartic terms to lower U measurably).
+// Moves x along the unit mode e of eigenvalue lambda < 0 to the lowest U(x + a e) over a = +-a_k, from the
+// amplitude where the harmonic drop |lambda| a^2/2 is 100 times the round-off floor up to 0.1 length units
+// in factors of 2 (a line search: the lowest point, not the first below U(x), since a step that only just
+// lowers U leaves a force below the FIRE tolerance and the polish returns to the saddle); false if no
+// amplitude lowers U by more than round-off (a negative curvature too weak against the quartic terms).
 bool step_down_along(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, const Eigen::VectorXd& e,
                      double lambda)
 {
     // U is a sum of non-negative terms, each exact to a few ulp: its round-off is relative to U itself.
     const double u0 = energy(x, nullptr, nullptr);
     const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::abs(u0);
-    for (double a = std::min(0.1, std::sqrt(200 * floor / std::abs(lambda))); a <= 0.1 * (1 + 1e-12);
-         a *= 10) {
-        const double up = energy(x + a * e, nullptr, nullptr), down = energy(x - a * e, nullptr, nullptr);
-        if (std::min(up, down) < u0 - floor) {
-            x += (up < down ? a : -a) * e;
-            return true;
-        }
-    }
-    return false;
+    double best_u = u0 - floor, best_a = 0;
+    for (double a = std::min(0.1, std::sqrt(200 * floor / std::abs(lambda))); a <= 0.1 * (1 + 1e-12); a *= 2)
+        for (double signed_a : {a, -a})
+            if (const double u = energy(x + signed_a * e, nullptr, nullptr); u < best_u) {
+                best_u = u;
+                best_a = signed_a;
+            }
+    if (best_a == 0) return false;
+    x += best_a * e;
+    return true;
 }
 
 } // namespace

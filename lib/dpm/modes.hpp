@@ -131,9 +131,9 @@ double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double forc
 // remove (it steps only along the positive modes) and which a count of lambda < threshold took for a 4th
 // zero mode. settle_at_minimum polishes (polish_for_modes); then, while the lowest eigenvalue lies below
 // minus the zero threshold (zero_mode_threshold(eigenvalues / eigenvalue_unit, zero_threshold)), at most
-// `attempts` times: it moves x along that mode to the lower of U(x +- a e) for the first amplitude that
-// lowers the energy beyond round-off (from where the harmonic drop |lambda| a^2/2 is 100 times round-off,
-// tenfold up to 0.1 length units), relaxes (`relax`: the protocol's FIRE) and polishes again. Returned: the
+// `attempts` times: it moves x along that mode to the lowest U(x + a e) over a = +-a_k (from where the
+// harmonic drop |lambda| a^2/2 is 100 times round-off up to 0.1 length units, in factors of 2), relaxes
+// (`relax`: the protocol's FIRE) and polishes again. Returned: the
 // largest force reached, the escapes made and the lowest eigenvalue at the end (in eigenvalue_unit; below
 // minus the threshold if the packing is still a saddle).
 struct MinimumSettling
