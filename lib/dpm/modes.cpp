@@ -131,58 +131,6 @@ double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double forc
     return polish_newton(system, x, 1e-14 * force_unit, 30);
 }
 
-namespace {
-
-// Moves x along the unit mode e of eigenvalue lambda < 0 to the lowest U(x + a e) over a = +-a_k, from the
-// amplitude where the harmonic drop |lambda| a^2/2 is 100 times the round-off floor up to 0.1 length units
-// in factors of 2 (a line search: the lowest point, not the first below U(x), since a step that only just
-// lowers U leaves a force below the FIRE tolerance and the polish returns to the saddle); false if no
-// amplitude lowers U by more than round-off (a negative curvature too weak against the quartic terms).
-bool step_down_along(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, const Eigen::VectorXd& e,
-                     double lambda)
-{
-    // U is a sum of non-negative terms, each exact to a few ulp: its round-off is relative to U itself.
-    const double u0 = energy(x, nullptr, nullptr);
-    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::abs(u0);
-    double best_u = u0 - floor, best_a = 0;
-    for (double a = std::min(0.1, std::sqrt(200 * floor / std::abs(lambda))); a <= 0.1 * (1 + 1e-12); a *= 2)
-        for (double signed_a : {a, -a})
-            if (const double u = energy(x + signed_a * e, nullptr, nullptr); u < best_u) {
-                best_u = u;
-                best_a = signed_a;
-            }
-    if (best_a == 0) return false;
-    x += best_a * e;
-    return true;
-}
-
-} // namespace
-
-MinimumSettling settle_at_minimum(const EnergyWithDerivatives& energy,
-                                  const std::function<void(Eigen::VectorXd&)>& relax, Eigen::VectorXd& x,
-                                  double force_unit, double eigenvalue_unit, double zero_threshold,
-                                  int attempts)
-{
-    MinimumSettling out;
-    out.force_max = polish_for_modes(energy, x, force_unit);
-    for (;;) {
-        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
-        energy(x, nullptr, &m);
-        const Eigen::VectorXd lambda =
-            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues() /
-            eigenvalue_unit;
-        out.lowest_eigenvalue = lambda(0);
-        if (count_negative_modes(lambda, zero_mode_threshold(lambda, zero_threshold)) == 0 ||
-            out.saddle_escapes == attempts)
-            return out;
-        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
-        if (!step_down_along(energy, x, solver.eigenvectors().col(0), solver.eigenvalues()(0))) return out;
-        relax(x);
-        out.force_max = polish_for_modes(energy, x, force_unit);
-        ++out.saddle_escapes;
-    }
-}
-
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& mode, double amplitude)
 {

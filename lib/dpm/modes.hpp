@@ -125,28 +125,6 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
 double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit);
 double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit);
 
-// The spectrum of a packing is taken at a minimum of its energy (decision dpm-packing-minimum). FIRE stops
-// on the force alone and can stop beside a saddle: a 16 x 42 shell packing stopped with one particle
-// (7 contacts) on a rotation of negative curvature, lambda~ = -2.2e-8, which the Newton polish cannot
-// remove (it steps only along the positive modes) and which a count of lambda < threshold took for a 4th
-// zero mode. settle_at_minimum polishes (polish_for_modes); then, while the lowest eigenvalue lies below
-// minus the zero threshold (zero_mode_threshold(eigenvalues / eigenvalue_unit, zero_threshold)), at most
-// `attempts` times: it moves x along that mode to the lowest U(x + a e) over a = +-a_k (from where the
-// harmonic drop |lambda| a^2/2 is 100 times round-off up to 0.1 length units, in factors of 2), relaxes
-// (`relax`: the protocol's FIRE) and polishes again. Returned: the
-// largest force reached, the escapes made and the lowest eigenvalue at the end (in eigenvalue_unit; below
-// minus the threshold if the packing is still a saddle).
-struct MinimumSettling
-{
-    double force_max = 0;
-    int saddle_escapes = 0;
-    double lowest_eigenvalue = 0;
-};
-MinimumSettling settle_at_minimum(const EnergyWithDerivatives& energy,
-                                  const std::function<void(Eigen::VectorXd&)>& relax, Eigen::VectorXd& x,
-                                  double force_unit, double eigenvalue_unit, double zero_threshold,
-                                  int attempts = 4);
-
 // U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& mode, double amplitude);

@@ -194,14 +194,10 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     JamResult r = jam(o);
     const double jam_seconds = seconds_since(started);
     context.count_steps(r.fire_iterations);
-    // At a minimum, as in 3D: forces to round-off (decision dpm-zero-mode-count: FIRE leaves ~1e-10 on
-    // rattlers) and off any saddle (decision dpm-packing-minimum).
+    // Forces to round-off first, as in 3D (decision dpm-zero-mode-count): FIRE leaves ~1e-10 on rattlers.
+    // A saddle FIRE stopped beside shows as negative modes (decision dpm-packing-minimum).
     const double zero_threshold = p.real("zero_threshold");
-    const MinimumSettling settled =
-        settle_at_minimum([&r](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                               Eigen::MatrixXd* h) { return total_energy(r.system, y, g, h); },
-                          [&r](Eigen::VectorXd& y) { relax_fire(r.system, y, r.fire); }, r.x, r.pressure_unit,
-                          r.pressure_unit, zero_threshold);
+    const double force_max = polish_for_modes(r.system, r.x, r.pressure_unit);
     const SpectrumCounts counts = write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, context);
     if (o.model != "smooth_disk")
         write_mode_parts(r.system, r.x, r.pressure_unit, counts.first_positive(), context);
@@ -219,8 +215,7 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     s["jam_seconds"] = jam_seconds;
     s["fire_iterations"] = r.fire_iterations;
     s["zero_modes_without_rattlers"] = counts.zero - rattler_zero_modes;
-    s["force_max"] = settled.force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
-    s["saddle_escapes"] = settled.saddle_escapes;
+    s["force_max"] = force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
     s["pressure_reached"] = pressure(stress_tensor(r.system, r.x)) / r.pressure_unit;
     s["phi"] = packing_fraction(r.system, r.x);
 }

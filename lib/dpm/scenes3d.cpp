@@ -190,9 +190,9 @@ void write_zero_mode_parts3d(const DpmSystem3d& system, const Eigen::VectorXd& x
     context.summary()["nontrivial_zero_modes"] = dimension;
 }
 
-// Fig. 9.15(b): the spectrum of a jammed packing at P_t, taken at a minimum: Newton-polished to round-off
-// forces (a residual force f shifts the zero modes by ~f R) and moved off any saddle FIRE stopped beside
-// (settle_at_minimum, decision dpm-packing-minimum).
+// Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
+// residual force f shifts the zero modes by ~f R). A saddle FIRE stopped beside shows as negative modes
+// (decision dpm-packing-minimum).
 void run_packing_modes3d(const Parameters& p, RunContext& context)
 {
     Jam3dOptions o;
@@ -221,9 +221,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
         return total_energy3d(j.system, y, g, h);
     };
     const double zero_threshold = p.real("zero_threshold");
-    const MinimumSettling settled = settle_at_minimum(
-        energy, [&j](Eigen::VectorXd& y) { relax_fire3d(j.system, y, j.fire); }, j.x, j.pressure_unit,
-        j.eigenvalue_unit, zero_threshold);
+    const double force_max = polish_for_modes(energy, j.x, j.pressure_unit);
 
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
@@ -261,8 +259,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
     s["box_steps"] = j.box_steps;
     s["fire_iterations"] = j.fire_iterations;
-    s["force_max"] = settled.force_max / j.pressure_unit;
-    s["saddle_escapes"] = settled.saddle_escapes;
+    s["force_max"] = force_max / j.pressure_unit;
 }
 
 } // namespace

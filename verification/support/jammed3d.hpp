@@ -2,11 +2,11 @@
 //
 // check_jammed3d: the checks of a packing at the end of the jamming protocol, shared by the rough and smooth
 // jamming tests: 1 <= P/P_t < 1.01; FIRE's stopping rule (rms force below its tolerance); every particle in
-// contact. It then settles the packing at a minimum as dpm.modes3d does (settle_at_minimum: Newton to
-// round-off forces, since a residual force f shifts the zero modes by ~f R, and off any saddle), checks that
-// no negative mode is left and returns the zero modes of the dynamical matrix (eq. 9.28; the smallest
-// non-zero eigenvalue is ~1e-4 k_v v0^(4/3), the zero ones ~1e-16, threshold 1e-10 as Fig. 9.15a) and the
-// rattlers, for the caller's count (sec. 9.4.3: 3 periodic translations plus 6 per rattler).
+// contact. It then polishes the packing by Newton to round-off forces (a residual force f shifts the zero
+// modes by ~f R), checks that it is a minimum (no negative mode, decision dpm-packing-minimum) and returns
+// the zero modes of the dynamical matrix (eq. 9.28; the smallest non-zero eigenvalue is ~1e-4 k_v v0^(4/3),
+// the zero ones ~1e-16, threshold 1e-10 as Fig. 9.15a) and the rattlers, for the caller's count (sec.
+// 9.4.3: 3 periodic translations plus 6 per rattler).
 #pragma once
 
 #include "dpm/jam3d.hpp"
@@ -40,9 +40,7 @@ inline JammedModes check_jammed3d(dpm::Jam3dResult& j, double pressure_onset)
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, gr, h);
     };
-    settle_at_minimum(
-        energy, [&j](Eigen::VectorXd& y) { relax_fire3d(j.system, y, j.fire); }, j.x, j.pressure_unit,
-        j.eigenvalue_unit, 1e-10);
+    polish_for_modes(energy, j.x, j.pressure_unit);
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
     total_energy3d(j.system, j.x, nullptr, &m);
     const Eigen::VectorXd lambda =
