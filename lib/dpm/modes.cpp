@@ -267,12 +267,6 @@ std::vector<ModeParts> nontrivial_zero_mode_parts_of(const Particles& particles,
 
 } // namespace
 
-std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x,
-                                                  const Eigen::MatrixXd& zero_modes, int& dimension_out)
-{
-    return nontrivial_zero_mode_parts_of<2>(system.particles, x, zero_modes, dimension_out);
-}
-
 std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem3d& system, const Eigen::VectorXd& x,
                                                   const Eigen::MatrixXd& zero_modes, int& dimension_out)
 {

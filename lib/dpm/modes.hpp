@@ -75,17 +75,15 @@ struct ModeParts
 ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode);
 ModeParts decompose_mode(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode);
 
-// Where the zero modes of a periodic packing beyond its uniform translations live (Figs. 9.14b, 9.15b: the
-// paper counts 2 in 2D and 3 in 3D besides the rattlers'). `zero_modes` holds the zero eigenvectors as
-// columns; their span minus the `dimension` uniform translations is spanned by the left singular vectors
+// Where the zero modes of a periodic 3D packing beyond its uniform translations live (Fig. 9.15b: the
+// paper counts 3 besides the rattlers'). `zero_modes` holds the zero eigenvectors as
+// columns; their span minus the 3 uniform translations is spanned by the left singular vectors
 // of (1 - T T^T) Z with singular value above 1/2 (T the unit translations; a translation in span Z gives
 // a singular value 0, a mode orthogonal to T gives 1). Returned per particle are the parts (decompose_mode)
 // of that subspace, each summed over an orthonormal basis of it and divided by its dimension, so that they
 // add up to 1 over all particles and do not depend on the basis; `dimension_out` is the subspace's
 // dimension. A rattler's rigid motions show as its translation and rotation, a particle that can turn
 // about the line through its contacts as its rotation alone.
-std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x,
-                                                  const Eigen::MatrixXd& zero_modes, int& dimension_out);
 std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem3d& system, const Eigen::VectorXd& x,
                                                   const Eigen::MatrixXd& zero_modes, int& dimension_out);
 
