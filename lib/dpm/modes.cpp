@@ -205,6 +205,15 @@ void add_particle_mode_parts(const Eigen::Matrix<double, Dim, Eigen::Dynamic>& r
     parts.deformation += ((u.colwise() - t) - rotation).squaredNorm();
 }
 
+// The same for particle p (a block of `count` vertices from `first`) of a mode over the whole system.
+template <int Dim, class Particle>
+void add_mode_parts_on(const Particle& p, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
+                       ModeParts& parts)
+{
+    add_particle_mode_parts<Dim>(x.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
+                                 mode.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count), parts);
+}
+
 // Shares of |u|^2: the three parts divided by their sum (which is |u|^2, the parts being orthogonal).
 ModeParts normalised(ModeParts parts)
 {
@@ -223,9 +232,7 @@ ModeParts decompose_mode_of(const Particles& particles, const Eigen::VectorXd& x
 {
     ModeParts parts;
     for (const auto& p : particles)
-        add_particle_mode_parts<Dim>(x.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
-                                     mode.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
-                                     parts);
+        add_mode_parts_on<Dim>(p, x, mode, parts);
     return normalised(parts);
 }
 
@@ -251,11 +258,8 @@ std::vector<ModeParts> nontrivial_zero_mode_parts_of(const Particles& particles,
     dimension_out = static_cast<int>(basis.cols());
     std::vector<ModeParts> parts(particles.size());
     for (std::size_t m = 0; m < particles.size(); ++m) {
-        const auto& p = particles[m];
         for (Eigen::Index k = 0; k < basis.cols(); ++k)
-            add_particle_mode_parts<Dim>(
-                x.segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count),
-                basis.col(k).segment(Dim * p.first, Dim * p.count).reshaped(Dim, p.count), parts[m]);
+            add_mode_parts_on<Dim>(particles[m], x, basis.col(k), parts[m]);
         if (dimension_out > 0) {
             parts[m].translation /= dimension_out;
             parts[m].rotation /= dimension_out;
