@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "dpm/jam_schedule.hpp"
+#include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -136,11 +137,23 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     const auto current_pressure = [&] { return pressure3d(stress_tensor3d(s, out.x)) / out.pressure_unit; };
     relax(0);
 
+    // Saddle test and move: energy amplitudes up to 0.1 sigma (sigma = 1), as in the diagnosis of the
+    // 16 x 42 shell packing (decision dpm-packing-minimum).
+    const std::function<bool()> leave_saddle = [&] {
+        const EnergyWithDerivatives energy = [&s](const Eigen::VectorXd& y, Eigen::VectorXd* gradient,
+                                                  Eigen::MatrixXd* hessian) {
+            return total_energy3d(s, y, gradient, hessian);
+        };
+        return dpm::leave_saddle(energy, out.x, out.pressure_unit, out.eigenvalue_unit, o.zero_threshold,
+                                 0.1);
+    };
+
     BoxSchedule schedule;
     schedule.onset = o.pressure_onset;
     Eigen::VectorXd saved_x;
     double saved_box = L;
-    const CompressiblePacking packing{current_pressure, [&](double f) { scale_packing3d(s, out.x, f); },
+    const CompressiblePacking packing{current_pressure,
+                                      [&](double f) { scale_packing3d(s, out.x, f); },
                                       relax,
                                       [&] {
                                           saved_x = out.x;
@@ -149,9 +162,10 @@ Jam3dResult jam3d(const Jam3dOptions& o)
                                       [&] {
                                           out.x = saved_x;
                                           *s.box = saved_box;
-                                      }};
+                                      },
+                                      leave_saddle};
     for (double target : pressure_targets(o.pressure_onset, o.pressure_max, o.pressures)) {
-        reach_pressure(target, true, schedule, packing);
+        reach_stable_pressure(target, schedule, packing, o.saddle_escapes, out.saddle_escapes);
         out.states.push_back({packing_fraction3d(s, out.x), current_pressure(), out.x, *s.box});
         if (out.states.size() == 1) out.box_steps = schedule.step_index;
     }

@@ -3,7 +3,8 @@
 // overlap; isotropic compression (particle centres scaled, shapes kept) in steps Delta L/L, FIRE after each,
 // undo and halve on overshoot, until 1 <= P/P_t < 1.01 (jam_schedule.hpp); P = Tr(Sigma)/3 of the 3D virial
 // stress (system3d.hpp, the analogue of eq. 9.26). Then, optionally, further targets log-spaced up to
-// pressure_max, each reached the same way from the previous packing (as in 2D, jam.hpp).
+// pressure_max, each reached the same way from the previous packing (as in 2D, jam.hpp). A packing that is
+// a saddle at a target (a negative eigenvalue of its Hessian) is moved off it and compressed again.
 //
 // Particles: 50:50 bidisperse, both on the same geodesic mesh, the large ones scaled by size_ratio in
 // diameter; vertex diameter sigma = 1 and the small particles' mean edge 0.85 sigma (as the 2D polygons,
@@ -38,6 +39,11 @@ struct Jam3dOptions
     std::uint64_t seed = 1;
     // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp)
     InteractionKind interaction = InteractionKind::rough;
+    // A packing that is a saddle at a target is moved off it and compressed to the target again, at most
+    // this often per target (reach_stable_pressure, decision dpm-packing-minimum); 0: never checked.
+    int saddle_escapes = 4;
+    double zero_threshold =
+        1e-10; // [k_v v0^(4/3)]: below minus it (or the round-off bound) a mode is negative
 };
 
 // A relaxed packing at one target pressure.
@@ -61,7 +67,8 @@ struct Jam3dResult
     double pressure = 0;            // P [k_v v0]
     long fire_iterations = 0;
     long box_steps = 0;
-    FireOptions fire; // the protocol's FIRE settings
+    int saddle_escapes = 0; // moves off a saddle, over all targets
+    FireOptions fire;       // the protocol's FIRE settings
 };
 
 Jam3dResult jam3d(const Jam3dOptions& options);

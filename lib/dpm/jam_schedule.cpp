@@ -41,4 +41,17 @@ long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
     return iterations;
 }
 
+long reach_stable_pressure(double target, BoxSchedule& schedule, const CompressiblePacking& packing,
+                           int max_escapes, int& escapes)
+{
+    long iterations = reach_pressure(target, true, schedule, packing);
+    while (packing.leave_saddle && escapes < max_escapes && packing.leave_saddle()) {
+        ++escapes;
+        iterations += packing.relax(schedule.step_index);
+        schedule.step = schedule.largest_step;
+        iterations += reach_pressure(target, packing.pressure() < target, schedule, packing);
+    }
+    return iterations;
+}
+
 } // namespace softgrain::dpm

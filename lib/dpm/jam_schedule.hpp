@@ -19,6 +19,9 @@ struct CompressiblePacking
     std::function<long(long)> relax;   // FIRE from the current state (argument: step index); iterations
     std::function<void()> save;        // remember the state (coordinates and box)
     std::function<void()> restore;     // return to the state saved last
+    // Optional (decision dpm-packing-minimum): moves the packing off a saddle and returns true, or returns
+    // false at a minimum (leave_saddle, modes.hpp).
+    std::function<bool()> leave_saddle;
 };
 
 struct BoxSchedule
@@ -37,5 +40,14 @@ std::vector<double> pressure_targets(double onset, double pressure_max, int coun
 // step falls below 1e-15 (a rearrangement makes the pressure jump over the window).
 long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
                     const CompressiblePacking& packing);
+
+// reach_pressure, then, while the packing there is a saddle (packing.leave_saddle) and fewer than
+// `max_escapes` moves were made: move off it, relax, and reach the target again from the new state with
+// the box step reset to the first, compressing or decompressing as the pressure requires. A saddle of a
+// jammed packing is unstable: relaxed from it, the packing falls to another state, at a lower pressure
+// (the 16 x 42 shell packing: P from 1e-7 to 3.5e-12), and is compressed to the target again. `escapes`
+// counts the moves. Returns the FIRE iterations spent.
+long reach_stable_pressure(double target, BoxSchedule& schedule, const CompressiblePacking& packing,
+                           int max_escapes, int& escapes);
 
 } // namespace softgrain::dpm

@@ -131,6 +131,34 @@ double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double forc
     return polish_newton(system, x, 1e-14 * force_unit, 30);
 }
 
+bool leave_saddle(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit,
+                  double eigenvalue_unit, double threshold, double max_amplitude)
+{
+    Eigen::VectorXd polished = x;
+    polish_for_modes(energy, polished, force_unit);
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+    const double u0 = energy(polished, nullptr, &m);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+    const Eigen::VectorXd lambda = solver.eigenvalues() / eigenvalue_unit;
+    if (lambda(0) > -zero_mode_threshold(lambda, threshold)) return false;
+
+    const Eigen::VectorXd lowest = solver.eigenvectors().col(0);
+    const double round_off =
+        static_cast<double>(x.size()) * std::numeric_limits<double>::epsilon() * std::abs(u0);
+    double best_change = -round_off, best_amplitude = 0;
+    for (double a = 1e-6; a <= max_amplitude; a *= 2)
+        for (double signed_a : {a, -a}) {
+            const double change = energy_change_along(energy, polished, lowest, signed_a);
+            if (change < best_change) {
+                best_change = change;
+                best_amplitude = signed_a;
+            }
+        }
+    if (best_amplitude == 0) return false;
+    x = polished + best_amplitude * lowest;
+    return true;
+}
+
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& mode, double amplitude)
 {

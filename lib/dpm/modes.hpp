@@ -123,6 +123,18 @@ double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_t
 double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit);
 double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double force_unit);
 
+// Moves a packing off a saddle (decision dpm-packing-minimum). A Newton-polished copy of x
+// (polish_for_modes) is a saddle when the lowest eigenvalue of its Hessian lies below minus the zero-mode
+// threshold (zero_mode_threshold of `threshold`, both in eigenvalue_unit). Then x becomes that copy moved
+// along the lowest mode to the lowest energy among the amplitudes +-a, a = 1e-6 sigma doubled up to
+// `max_amplitude`, and the function returns true. It returns false, x unchanged, at a minimum and where no
+// amplitude lowers U by more than its round-off n eps |U| (a saddle whose negative curvature is cut off by
+// quartic terms within 1e-6 sigma, as on the 2D floppy packing of DPM-Fig9.14def). Stepping only to the
+// first lower amplitude is not enough: FIRE then falls back to the saddle (4 of 4 tries on the 16 x 42
+// shell packing).
+bool leave_saddle(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit,
+                  double eigenvalue_unit, double threshold, double max_amplitude);
+
 // U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& mode, double amplitude);

@@ -191,8 +191,9 @@ void write_zero_mode_parts3d(const DpmSystem3d& system, const Eigen::VectorXd& x
 }
 
 // Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
-// residual force f shifts the zero modes by ~f R). A saddle FIRE stopped beside shows as negative modes
-// (decision dpm-packing-minimum).
+// residual force f shifts the zero modes by ~f R). The protocol moves a packing off a saddle and compresses
+// it again (jam3d.hpp); one left after `saddle_escapes` moves shows as negative modes (decision
+// dpm-packing-minimum).
 void run_packing_modes3d(const Parameters& p, RunContext& context)
 {
     Jam3dOptions o;
@@ -213,6 +214,8 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     o.stiffness.gamma = p.real("gamma");
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     o.interaction = interaction_from_name(p.choice("contact"));
+    o.saddle_escapes = static_cast<int>(p.integer("saddle_escapes"));
+    o.zero_threshold = p.real("zero_threshold");
     context.record_seed(o.seed);
     Jam3dResult j = jam3d(o);
     context.count_steps(j.fire_iterations);
@@ -258,6 +261,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     s["phi"] = packing_fraction3d(j.system, j.x);
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
     s["box_steps"] = j.box_steps;
+    s["saddle_escapes"] = j.saddle_escapes;
     s["fire_iterations"] = j.fire_iterations;
     s["force_max"] = force_max / j.pressure_unit;
 }
@@ -342,6 +346,11 @@ std::vector<ParameterSpec> modes3d_parameters()
             "soft_threshold", 1e-4, "k_v v0^(4/3)",
             "packing: a non-zero mode below this counts as soft (low-frequency), summary soft_modes")
             .positive(),
+        ParameterSpec::integer("saddle_escapes", 4, "1",
+                               "packing: at most this many moves off a saddle at P_t, each followed by "
+                               "compression to P_t again (decision dpm-packing-minimum); 0: the protocol's "
+                               "first state is kept. Summary saddle_escapes: the moves made")
+            .non_negative(),
     };
 }
 
