@@ -125,13 +125,15 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(stiffest));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
+    fire.max_iterations = o.fire_budget;
     const auto relax = [&](long step_index) {
         const FireResult r = relax_fire3d(s, out.x, fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
             throw NumericalError("relaxation during 3D compression (" + fire_shortfall(r, fire) + ")",
                                  step_index,
-                                 "force tolerance too small for the pressure; raise pressure_onset");
+                                 "force tolerance too small for the pressure; raise pressure_onset or "
+                                 "fire_budget");
         return r.iterations;
     };
     const auto current_pressure = [&] { return pressure3d(stress_tensor3d(s, out.x)) / out.pressure_unit; };
@@ -150,6 +152,7 @@ Jam3dResult jam3d(const Jam3dOptions& o)
 
     BoxSchedule schedule;
     schedule.onset = o.pressure_onset;
+    schedule.jump_step = o.jump_step;
     Eigen::VectorXd saved_x;
     double saved_box = L;
     const CompressiblePacking packing{current_pressure,

@@ -43,7 +43,9 @@ struct Jam3dOptions
     // this often per target (reach_stable_pressure, decision dpm-packing-minimum); 0: never checked.
     int saddle_escapes = 4;
     double zero_threshold =
-        1e-10; // [k_v v0^(4/3)]: below minus it (or the round-off bound) a mode is negative
+        1e-10;                  // [k_v v0^(4/3)]: below minus it (or the round-off bound) a mode is negative
+    long fire_budget = 1000000; // FIRE steps per relaxation; beyond them: NumericalError
+    double jump_step = 0;       // BoxSchedule::jump_step (0: off)
 };
 
 // A relaxed packing at one target pressure.

@@ -30,7 +30,9 @@ long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
         packing.scale(compressing ? 1.0 - step : 1.0 + step);
         iterations += packing.relax(schedule.step_index);
         const double after = packing.pressure();
-        if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
+        if (compressing && after >= 1.01 * target && step < schedule.jump_step) {
+            compressing = false; // a jump over the window: approach it from above (BoxSchedule::jump_step)
+        } else if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
             packing.restore();
             step *= 0.5;
         } else if (compressing ? target > schedule.onset && after < 0.5 * target && after > 0

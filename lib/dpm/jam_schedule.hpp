@@ -30,6 +30,10 @@ struct BoxSchedule
     double largest_step = 5e-3; // the first step and the cap of its growth (decision dpm-jam-protocol)
     double onset = 0;           // P_t: below it the step never grows
     long step_index = 0;        // box changes so far (diagnostics)
+    // Compressing: an overshoot of the window at a step below this is kept, and the target is approached
+    // from above by decompression (a rearrangement makes P jump over the window, so no smaller step lands
+    // in it from below; decision dpm-3d-jam-paper-size). 0: every overshoot is undone and halved.
+    double jump_step = 0;
 };
 
 // The targets of a compression: P_t, then `count` pressures log-spaced in (P_t, pressure_max]
@@ -37,7 +41,8 @@ struct BoxSchedule
 std::vector<double> pressure_targets(double onset, double pressure_max, int count);
 
 // Changes the box until 1 <= P/target < 1.01; returns the FIRE iterations spent. NumericalError if the
-// step falls below 1e-15 (a rearrangement makes the pressure jump over the window).
+// step falls below 1e-15 (a rearrangement makes the pressure jump over the window). Compressing, an
+// overshoot at a step below schedule.jump_step is kept and the rest is decompression.
 long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
                     const CompressiblePacking& packing);
 

@@ -216,6 +216,8 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     o.interaction = interaction_from_name(p.choice("contact"));
     o.saddle_escapes = static_cast<int>(p.integer("saddle_escapes"));
     o.zero_threshold = p.real("zero_threshold");
+    o.fire_budget = p.integer("fire_budget");
+    o.jump_step = p.real("jump_step");
     context.record_seed(o.seed);
     Jam3dResult j = jam3d(o);
     context.count_steps(j.fire_iterations);
@@ -350,6 +352,17 @@ std::vector<ParameterSpec> modes3d_parameters()
                                "packing: at most this many moves off a saddle at P_t, each followed by "
                                "compression to P_t again (decision dpm-packing-minimum); 0: the protocol's "
                                "first state is kept. Summary saddle_escapes: the moves made")
+            .non_negative(),
+        ParameterSpec::integer("fire_budget", 1000000, "1",
+                               "packing: FIRE steps allowed per relaxation of the jamming protocol; a "
+                               "relaxation that needs more stops the run with exit 3 (decision "
+                               "dpm-3d-jam-paper-size)")
+            .at_least(1),
+        ParameterSpec::real("jump_step", 0.0, "1",
+                            "packing: compressing towards P_t, an overshoot of the window at a box step "
+                            "Delta L/L below this is kept and P_t approached from above by decompression (a "
+                            "rearrangement that makes P jump over the window); 0: every overshoot is undone "
+                            "and the step halved (decision dpm-3d-jam-paper-size)")
             .non_negative(),
     };
 }
