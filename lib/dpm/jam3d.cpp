@@ -172,6 +172,7 @@ Jam3dResult jam3d(const Jam3dOptions& o)
         out.states.push_back({packing_fraction3d(s, out.x), current_pressure(), out.x, *s.box});
         if (out.states.size() == 1) out.box_steps = schedule.step_index;
     }
+    out.window_jumps = schedule.jumps;
     const Jam3dState& onset = out.states.front();
     out.x = onset.x;
     *s.box = onset.box;

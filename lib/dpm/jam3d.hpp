@@ -70,6 +70,7 @@ struct Jam3dResult
     long fire_iterations = 0;
     long box_steps = 0;
     int saddle_escapes = 0; // moves off a saddle, over all targets
+    long window_jumps = 0;  // overshoots of a target window kept and decompressed (Jam3dOptions::jump_step)
     FireOptions fire;       // the protocol's FIRE settings
 };
 

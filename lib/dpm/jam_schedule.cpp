@@ -32,6 +32,7 @@ long reach_pressure(double target, bool compressing, BoxSchedule& schedule,
         const double after = packing.pressure();
         if (compressing && after >= 1.01 * target && step < schedule.jump_step) {
             compressing = false; // a jump over the window: approach it from above (BoxSchedule::jump_step)
+            ++schedule.jumps;
         } else if (compressing ? after >= 1.01 * target : after < target) { // beyond the window: back, halve
             packing.restore();
             step *= 0.5;

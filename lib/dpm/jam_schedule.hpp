@@ -34,6 +34,7 @@ struct BoxSchedule
     // from above by decompression (a rearrangement makes P jump over the window, so no smaller step lands
     // in it from below; decision dpm-3d-jam-paper-size). 0: every overshoot is undone and halved.
     double jump_step = 0;
+    long jumps = 0; // overshoots kept under jump_step (diagnostics)
 };
 
 // The targets of a compression: P_t, then `count` pressures log-spaced in (P_t, pressure_max]

@@ -264,6 +264,7 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
     s["box_steps"] = j.box_steps;
     s["saddle_escapes"] = j.saddle_escapes;
+    s["window_jumps"] = j.window_jumps;
     s["fire_iterations"] = j.fire_iterations;
     s["force_max"] = force_max / j.pressure_unit;
 }

@@ -61,6 +61,7 @@ TEST_CASE("a pressure jump over the window: bisection fails, an overshoot kept a
     schedule.jump_step = 1e-3; // the first step 5e-3 halved three times: 6.25e-4
     reach_pressure(target, true, schedule, packing.operations());
     CHECK(packing.jammed);
+    CHECK(schedule.jumps == 1);
     const double p = packing.operations().pressure();
     CHECK(p >= target);
     CHECK(p < 1.01 * target);
