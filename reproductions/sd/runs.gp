@@ -1,7 +1,7 @@
 # Shared helpers of the SD figures: the data file of run k of this figure and the kappa of each run.
-# The driver writes the runs beside the reduced table: <datafile without .dat>/run-NNNN/<scene>/<file>.
-run_dir = datafile[1:strlen(datafile)-4]
-run_file(k, scene, name) = sprintf("%s/run-%04d/%s/%s", run_dir, k, scene, name)
+# The driver passes each run's output directory in `rundirs`, in sweep order (k = 0 is the first word),
+# wherever the runs live (beside the figure, or shared between figures under make reproduce-figures).
+run_file(k, name) = word(rundirs, k+1)."/".name
 stats datafile using (column("kappa")) nooutput
 runs = STATS_records
 array kappa_of[runs]

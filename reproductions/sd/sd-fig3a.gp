@@ -1,6 +1,6 @@
 # SD Fig. 3a: delta/R, a/R and |h-dot|/V along one approach (kappa of the run) with the asymptotes of Fig. 3a.
 load ARG0[1:strstrt(ARG0, "sd-fig")-1] . "runs.gp"  # beside this script
-f = run_file(0, "sd.approach", "approach.dat")
+f = run_file(0, "approach.dat")
 k = kappa_of[1]
 al = 4.0/9.0
 set logscale xy

@@ -1,7 +1,7 @@
 # SD Fig. 3b: phase diagram (h/R, kappa). Thick lines: theory (h = R; delta = h, i.e. kappa = 2 alpha (h/R)^(3/2)).
 # Thin lines: the gaps crossed by each constant-kappa simulation, coloured where a regime's width is <= 0.1.
-f = sprintf("%s/run-0000/sd.phase_diagram/phase_diagram.dat", datafile[1:strlen(datafile)-4])
-g = sprintf("%s/run-0000/sd.phase_diagram/crossover_lines.dat", datafile[1:strlen(datafile)-4])
+f = word(rundirs, 1)."/phase_diagram.dat"
+g = word(rundirs, 1)."/crossover_lines.dat"
 set logscale xy
 set format x "10^{%T}"
 set format y "10^{%T}"

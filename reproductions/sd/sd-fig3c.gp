@@ -7,4 +7,4 @@ set xlabel "h / R"
 set ylabel "{/Symbol d} / R"
 set key outside right
 set xrange [1e-7:200]
-plot for [k=0:runs-1] run_file(k, "sd.approach", "approach.dat") using (column("h")):(column("delta")) with lines lw 2 title kappa_title(k)
+plot for [k=0:runs-1] run_file(k, "approach.dat") using (column("h")):(column("delta")) with lines lw 2 title kappa_title(k)

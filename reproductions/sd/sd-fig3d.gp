@@ -7,5 +7,5 @@ set ylabel "{/Symbol l}_1"
 set key outside right
 set xrange [1e-7:200]
 set yrange [-0.6:0.1]
-plot for [k=0:runs-1] run_file(k, "sd.approach", "approach.dat") using (column("h")):(column("lambda1")) with lines lw 2 title kappa_title(k), \
+plot for [k=0:runs-1] run_file(k, "approach.dat") using (column("h")):(column("lambda1")) with lines lw 2 title kappa_title(k), \
      -0.5 ls 4 title "Poiseuille -1/2", 0 ls 4 title "Stokes, Hertz 0"

@@ -7,5 +7,5 @@ set ylabel "{/Symbol l}_2"
 set key outside right
 set xrange [1e-7:200]
 set yrange [-0.2:3.3]
-plot for [k=0:runs-1] run_file(k, "sd.approach", "approach.dat") using (column("h")):(column("lambda2")) with lines lw 2 title kappa_title(k), \
+plot for [k=0:runs-1] run_file(k, "approach.dat") using (column("h")):(column("lambda2")) with lines lw 2 title kappa_title(k), \
      0 ls 4 notitle, 1 ls 4 notitle, 3 ls 4 title "theory 0, 1, 3"

@@ -9,5 +9,5 @@ set ylabel "relative residual"
 set key outside right
 set xrange [1e-7:200]
 set yrange [1e-17:1e-5]
-plot for [k=0:runs-1] run_file(k, "sd.approach", "approach.dat") using (column("h")):(column("force_balance_residual") + 1e-17) with lines lw 2 lc (k+1) title kappa_title(k). " eq. (1)", \
-     for [k=0:runs-1] run_file(k, "sd.approach", "approach.dat") using (column("h")):(column("deflection_residual") + 1e-17) with points pt 7 ps 0.3 lc (k+1) notitle
+plot for [k=0:runs-1] run_file(k, "approach.dat") using (column("h")):(column("force_balance_residual") + 1e-17) with lines lw 2 lc (k+1) title kappa_title(k). " eq. (1)", \
+     for [k=0:runs-1] run_file(k, "approach.dat") using (column("h")):(column("deflection_residual") + 1e-17) with points pt 7 ps 0.3 lc (k+1) notitle

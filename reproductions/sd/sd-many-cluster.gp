@@ -1,5 +1,5 @@
 # Note [20] in 2D: the three gaps of a symmetric triangle against time, and the radial speed of particle 0.
-f = sprintf("%s/run-0000/sd.many/many.dat", datafile[1:strlen(datafile)-4])
+f = word(rundirs, 1)."/many.dat"
 set logscale xy
 set format x "10^{%T}"
 set format y "10^{%T}"

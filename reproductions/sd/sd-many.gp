@@ -1,5 +1,4 @@
 # Note [20]: gap of the first bond of each line against time; all coincide with the two-particle approach.
-run_dir = datafile[1:strlen(datafile)-4]
 stats datafile using (column("particles")) nooutput
 runs = STATS_records
 array n_of[runs]
@@ -13,5 +12,5 @@ set format y "10^{%T}"
 set xlabel "t V / R"
 set ylabel "gap h_{01} / R"
 set key bottom left
-plot for [k=0:runs-1] sprintf("%s/run-%04d/sd.many/many.dat", run_dir, k) using (column("t")):(column("h_0")) \
+plot for [k=0:runs-1] word(rundirs, k+1)."/many.dat" using (column("t")):(column("h_0")) \
         with linespoints lw 2 pt (k+4) ps 0.6 title sprintf("line of %d particles", n_of[k+1])
