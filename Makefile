@@ -1,6 +1,7 @@
 # softgrain: the two commands are `make reproduce-figures` and `make verify` (see README.md).
 BUILD  ?= build
 SCALE  ?= default
+OUT    ?= figures
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
@@ -33,10 +34,10 @@ verify-sanitize: deps
 	cmake --build build-sanitize -j $(JOBS)
 	@scripts/run-verification build-sanitize $(JOBS) -LE 'slow|reproduction'
 
-# Every figure of every paper (SCALE=smoke|default|paper), then figures/index.html. Figures run in parallel
-# under make -j.
+# Every figure of every paper (SCALE=smoke|default|paper) into $(OUT), then $(OUT)/index.html. Figures run in
+# parallel under make -j; a failed figure does not stop the others, and the command exits non-zero naming it.
 reproduce-figures: build
-	@$(MAKE) --no-print-directory -f scripts/figures.mk SCALE=$(SCALE) SOFTGRAIN=$(BUILD)/softgrain
+	@$(MAKE) --no-print-directory -f scripts/figures.mk SCALE=$(SCALE) SOFTGRAIN=$(BUILD)/softgrain OUT=$(OUT)
 
 bench: build
 	@scripts/bench $(BUILD)/softgrain
