@@ -91,7 +91,18 @@ ParameterSpec ParameterSpec::real(std::string name, double value, std::string un
 ParameterSpec ParameterSpec::integer(std::string name, long long value, std::string unit,
                                      std::string description)
 {
-    return make_spec(std::move(name), ParameterType::integer, value, std::move(unit), std::move(description));
+    // Scenes count in int: every integer parameter is refused above INT_MAX rather than narrowed (4294967300
+    // particles would otherwise run as 4). A scene may bound it lower with at_most().
+    ParameterSpec spec =
+        make_spec(std::move(name), ParameterType::integer, value, std::move(unit), std::move(description));
+    return spec.at_most(std::numeric_limits<int>::max());
+}
+
+ParameterSpec ParameterSpec::seed(std::string name, long long value, std::string description)
+{
+    ParameterSpec spec =
+        make_spec(std::move(name), ParameterType::integer, value, "1", std::move(description)).non_negative();
+    return spec.at_most(static_cast<double>(std::numeric_limits<long long>::max()));
 }
 
 ParameterSpec ParameterSpec::boolean(std::string name, bool value, std::string description)
@@ -236,6 +247,7 @@ void Parameters::assign(const ParameterSpec& spec, ParameterValue value, const s
     } else if (spec.type != ParameterType::boolean) {
         const double x = spec.type == ParameterType::real ? std::get<double>(value)
                                                           : static_cast<double>(std::get<long long>(value));
+        if (std::isnan(x)) refuse(spec, shown_value, "is not a number"); // e.g. `dt = nan` in a TOML file
         const bool infinite_ok = std::isinf(x) && x > 0 && spec.accepts_infinity;
         const bool below_min = spec.min_inclusive ? x < spec.min : x <= spec.min;
         const bool above_max = spec.max_inclusive ? x > spec.max : x >= spec.max;

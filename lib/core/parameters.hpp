@@ -47,6 +47,8 @@ struct ParameterSpec
     static ParameterSpec real(std::string name, double value, std::string unit, std::string description);
     static ParameterSpec integer(std::string name, long long value, std::string unit,
                                  std::string description);
+    // A random seed: any integer from 0 to 2^63 - 1 (not bounded by INT_MAX as counts are).
+    static ParameterSpec seed(std::string name, long long value, std::string description);
     static ParameterSpec boolean(std::string name, bool value, std::string description);
     static ParameterSpec choice(std::string name, std::string value, std::vector<std::string> choices,
                                 std::string description);

@@ -132,7 +132,7 @@ std::vector<ParameterSpec> boundary_jam_parameters()
             .at_least(8),
         ParameterSpec::real("boundary_sigma", 0.25, "d", "boundary vertex diameter").positive(),
         ParameterSpec::real("kl", 1.0, "k_c", "boundary edge stiffness k_l/k_c").positive(),
-        ParameterSpec::integer("seed", 1, "1", "seed of the first trial").non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the first trial"),
         ParameterSpec::real("ka", 0, "k_c/d^2",
                             "area stiffness k_a of the boundary (eq. 9.1); 0: floppy (Fig. 9.18a-e), > 0: "
                             "fluid-filled boundary scanned over A0 (Fig. 9.18f)")

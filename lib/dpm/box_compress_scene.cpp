@@ -92,8 +92,7 @@ std::vector<ParameterSpec> compress_box_parameters()
             .positive()
             .below(1.0),
         ParameterSpec::integer("steps", 20, "1", "steps of the uniaxial compression").at_least(1),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random placement and orientations")
-            .non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the random placement and orientations"),
     };
 }
 

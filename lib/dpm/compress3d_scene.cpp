@@ -128,7 +128,7 @@ std::vector<ParameterSpec> compress3d_parameters()
         ParameterSpec::integer("network_nodes", 2000, "1", "network: nodes (paper: 3765)").at_least(50),
         ParameterSpec::real("cutoff", 1.83, "node spacing", "network: springs join nodes closer than this")
             .positive(),
-        ParameterSpec::integer("seed", 1, "1", "network: seed of the interior node placement").non_negative(),
+        ParameterSpec::seed("seed", 1, "network: seed of the interior node placement"),
         ParameterSpec::real("kp", 4.0, "k_c", "plate-vertex spring k_p (paper: 4 k_c)").positive(),
         ParameterSpec::integer("steps", 24, "1", "compression steps, log-spaced").at_least(3),
         ParameterSpec::real("delta_min", 1e-3, "D", "smallest compression delta/D").positive(),

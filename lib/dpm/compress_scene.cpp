@@ -88,7 +88,7 @@ std::vector<ParameterSpec> compress2d_parameters()
                             "network: random node displacement (disorder) of the triangular lattice")
             .non_negative()
             .below(0.5),
-        ParameterSpec::integer("seed", 1, "1", "network: seed of the node displacements").non_negative(),
+        ParameterSpec::seed("seed", 1, "network: seed of the node displacements"),
         ParameterSpec::integer("steps", 30, "1", "compression steps, log-spaced").at_least(3),
         ParameterSpec::real("delta_min", 1e-4, "D", "smallest compression delta/D").positive(),
         ParameterSpec::real("delta_max", 0.2, "D", "largest compression delta/D").positive().below(1.0),

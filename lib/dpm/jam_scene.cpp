@@ -84,7 +84,7 @@ std::vector<ParameterSpec> jam_parameters()
                               {"smooth_disk", "rough_disk", "shell", "floppy", "surface_tension"},
                               "smooth bidisperse disks, rigid rough polygons (rough disks) or rough "
                               "deformable particles of Table 9.1"),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random initial placement").non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the random initial placement"),
         ParameterSpec::real("pressure_onset", 1e-7, "k_c or k_a a0", "P_t: jamming onset pressure")
             .positive(),
         ParameterSpec::real("pressure_max", 1e-3, "k_c or k_a a0", "largest pressure of the compression")

@@ -285,8 +285,7 @@ std::vector<ParameterSpec> modes_parameters()
                             "zero mode: lambda~ below this (Fig. 9.14a), or below the round-off bound n eps "
                             "max|lambda~| where that is larger (summary zero_threshold_used)")
             .positive(),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random start of a floppy particle")
-            .non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the random start of a floppy particle"),
     };
 }
 

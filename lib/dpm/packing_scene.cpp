@@ -61,8 +61,7 @@ void run_packing_fraction(const Parameters& p, RunContext& context)
 std::vector<ParameterSpec> packing_fraction_parameters()
 {
     return {
-        ParameterSpec::integer("seed", 12, "1", "seed of the random initial placement (the packing)")
-            .non_negative(),
+        ParameterSpec::seed("seed", 12, "seed of the random initial placement (the packing)"),
         ParameterSpec::integer("particles", 7, "1", "particles N (Fig. 9.12: 7)").at_least(2),
         ParameterSpec::integer("nodes", 5, "1", "vertices per particle N_mu (Fig. 9.12: 5)").at_least(3),
         ParameterSpec::real("C", 0.726, "1",
@@ -75,7 +74,7 @@ std::vector<ParameterSpec> packing_fraction_parameters()
                             "area stiffness k_a a0^2/(k_c sigma^2) (Fig. 9.12: 0.9)")
             .positive(),
         ParameterSpec::integer("samples", 1000000, "1", "Monte-Carlo points").at_least(1000),
-        ParameterSpec::integer("mc_seed", 1, "1", "seed of the Monte-Carlo points").non_negative(),
+        ParameterSpec::seed("mc_seed", 1, "seed of the Monte-Carlo points"),
     };
 }
 

@@ -115,7 +115,7 @@ std::vector<ParameterSpec> rearrangement_parameters()
         ParameterSpec::integer("particles", 64, "1",
                                "smooth disks N, half small (sigma = 1), half large (1.4)")
             .at_least(2),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random initial placement").non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the random initial placement"),
         ParameterSpec::real("pressure_onset", 1e-6, "k_c", "P_t: jamming onset pressure the search starts at")
             .positive(),
         ParameterSpec::real("dphi", 1e-5, "1", "compression step Delta phi (Fig. 9.13e, f: ~1e-5)")

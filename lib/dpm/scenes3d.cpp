@@ -326,11 +326,9 @@ std::vector<ParameterSpec> modes3d_parameters()
                             "zero mode: lambda~ below this (Fig. 9.15a), or below the round-off bound n eps "
                             "max|lambda~| where that is larger (summary zero_threshold_used)")
             .positive(),
-        ParameterSpec::integer(
-            "seed", 1, "1",
-            "seed of the random displacement of the start (single particle) or of the random "
-            "positions and orientations (packing)")
-            .non_negative(),
+        ParameterSpec::seed("seed", 1,
+                            "seed of the random displacement of the start (single particle) or of the random "
+                            "positions and orientations (packing)"),
         ParameterSpec::integer(
             "particles", 1, "1",
             "1: a single particle (Fig. 9.15a); an even number >= 2: a jammed 50:50 bidisperse "

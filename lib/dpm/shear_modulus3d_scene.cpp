@@ -129,8 +129,7 @@ std::vector<ParameterSpec> shear_modulus3d_parameters()
                             "largest force component allowed after each Newton minimisation (Newton stops "
                             "at round-off, usually far below)")
             .positive(),
-        ParameterSpec::integer("seed", 1, "1", "seed of the random placement of the first packing")
-            .non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the random placement of the first packing"),
     };
 }
 

@@ -146,7 +146,7 @@ std::vector<ParameterSpec> shear_friction_parameters()
         ParameterSpec::real("dx", 0.016, "D_beta", "shift of the anchors per step").positive(),
         ParameterSpec::real("x_start", -0.7, "D_beta", "first x_bm / D_beta"),
         ParameterSpec::real("x_end", 0.7, "D_beta", "last x_bm / D_beta"),
-        ParameterSpec::integer("seed", 1, "1", "noise seed for floppy particles (kb = 0)").non_negative(),
+        ParameterSpec::seed("seed", 1, "noise seed for floppy particles (kb = 0)"),
         ParameterSpec::choice(
             "frame_range", "contact", {"contact", "scan"},
             "frames evenly spaced from the first to the last contact, or over the whole scan "

@@ -139,7 +139,7 @@ std::vector<ParameterSpec> slump_parameters()
             .below(1.0),
         ParameterSpec::integer("max_steps", 2000000, "1", "step cap of each stage (exit 3 beyond)")
             .at_least(1),
-        ParameterSpec::integer("seed", 1, "1", "seed of the placement and orientations").non_negative(),
+        ParameterSpec::seed("seed", 1, "seed of the placement and orientations"),
     };
 }
 

@@ -228,7 +228,7 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             ParameterSpec::integer("particles", 400, "1", "number of rings").at_least(1),
             ParameterSpec::integer("nodes", 32, "1", "vertices per ring").at_least(8),
             ParameterSpec::integer("steps", 2000, "1", "time steps (the first is not timed)").at_least(2),
-            ParameterSpec::integer("seed", 1, "1", "seed of the initial velocities").non_negative(),
+            ParameterSpec::seed("seed", 1, "seed of the initial velocities"),
             ParameterSpec::real("dt_factor", 0.2, "1",
                                 "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
                                 "(decision spd-vertex-pair-stability)")
@@ -276,7 +276,7 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
                 "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
                 "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
                 .positive(),
-            ParameterSpec::integer("seed", 1, "1", "seed of the radii and of the deposition").non_negative(),
+            ParameterSpec::seed("seed", 1, "seed of the radii and of the deposition"),
         },
         run_compaction,
         /*checkpoints=*/true});

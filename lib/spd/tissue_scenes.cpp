@@ -294,7 +294,7 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
                                 "Delta R/R of the disks whose radical cells make the tissue")
                 .non_negative()
                 .below(0.25),
-            ParameterSpec::integer("seed", 1, "1", "seed of the disk radii").non_negative(),
+            ParameterSpec::seed("seed", 1, "seed of the disk radii"),
             ParameterSpec::integer("edge_segments", 2, "1", "shell elements per cell edge").at_least(1),
             ParameterSpec::real("r", 0.02, "m",
                                 "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "

@@ -43,7 +43,7 @@ ParameterSpec density(double value)
 
 ParameterSpec jitter_seed()
 {
-    return ParameterSpec::integer("seed", 1, "1", "seed of the jitter").non_negative();
+    return ParameterSpec::seed("seed", 1, "seed of the jitter");
 }
 
 ParameterSpec time_step_check()

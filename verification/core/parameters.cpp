@@ -100,3 +100,29 @@ TEST_CASE("a keyword stands in for a computed real value; other words are still 
               "parameter 'A0' = 'max' is not a real number; allowed: a real number >= 1, or min [1]");
     }
 }
+
+TEST_CASE("nan is refused from a TOML file as from --set: NaN passes no range check")
+{
+    Parameters p = example();
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("nu = nan\n"), "test.toml"), InputError);
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("eta = nan\n"), "test.toml"),
+                    InputError); // inf allowed, nan not
+    CHECK_THROWS_AS(p.set_from_text("nu", "nan"), InputError);
+    CHECK(p.real("nu") == 0.3);
+    CHECK(p.real("eta") == 0.0);
+}
+
+TEST_CASE("integers above INT_MAX are refused, not narrowed; seeds take the whole 63-bit range")
+{
+    Parameters p = example();
+    CHECK_THROWS_AS(p.set_from_text("nodes", "4294967300"), InputError); // 2^32 + 4 would run as 4 in an int
+    CHECK_THROWS_AS(p.set_from_text("nodes", "2147483648"), InputError); // INT_MAX + 1
+    CHECK_THROWS_AS(p.set_from_toml(toml::parse("nodes = 1000000000000\n"), "test.toml"), InputError);
+    p.set_from_text("nodes", "2147483647");
+    CHECK(p.integer("nodes") == 2147483647);
+
+    Parameters seeded({ParameterSpec::seed("seed", 1, "seed of the placement")});
+    seeded.set_from_text("seed", "9223372036854775807");
+    CHECK(seeded.integer("seed") == 9223372036854775807LL);
+    CHECK_THROWS_AS(seeded.set_from_text("seed", "-1"), InputError);
+}
