@@ -21,7 +21,7 @@ void run_harmonic(const Parameters& p, RunContext& context)
                                                         {"x", "m", "position"},
                                                         {"v", "m/s", "velocity"},
                                                         {"energy_error", "1", "E/E0 - 1"}});
-    const long total_steps = static_cast<long>(std::ceil(periods * oscillator.period() / dt));
+    const long total_steps = harmonic_step_count(oscillator, dt, periods);
     const long stride = std::max(1L, total_steps / 2000); // at most ~2000 rows
     long step = 0;
     auto progress = context.progress("core.harmonic");

@@ -35,6 +35,20 @@ double verlet_energy_error_bound(const HarmonicOscillator& oscillator, double dt
     return ratio * ratio;
 }
 
+long harmonic_step_count(const HarmonicOscillator& oscillator, double dt, double periods)
+{
+    // Refused before the run when the steps cannot be taken: a mass so small that omega overflows (a period
+    // of 0: no step), or a dt so small that the count overflows (dt = 1e-300).
+    constexpr double max_steps = 1e10;
+    const double wanted = std::ceil(periods * oscillator.period() / dt);
+    if (!(wanted >= 1 && wanted <= max_steps))
+        throw InputError("periods = " + std::to_string(periods) +
+                         " of T = 2 pi sqrt(m/k) = " + std::to_string(oscillator.period()) +
+                         " s at dt = " + std::to_string(dt) + " s ask for " + std::to_string(wanted) +
+                         " steps; allowed: 1 to 1e10 steps (check mass, stiffness, dt)");
+    return static_cast<long>(wanted);
+}
+
 namespace {
 
 std::string instability_cause(const HarmonicOscillator& oscillator, double dt)
@@ -70,7 +84,7 @@ HarmonicRun simulate_harmonic(const HarmonicOscillator& oscillator, double dt, d
     const double e0 = energy(x[0], v[0]);
 
     HarmonicRun run;
-    const long steps = static_cast<long>(std::ceil(periods * oscillator.period() / dt));
+    const long steps = harmonic_step_count(oscillator, dt, periods);
     std::vector<double> upward_crossings;
     for (long n = 1; n <= steps; ++n) {
         const double x_before = x[0];

@@ -36,6 +36,9 @@ struct HarmonicRun
 // Called after every step with t [s], x [m], v [m/s] and E/E0 - 1.
 using HarmonicObserver = std::function<void(double, double, double, double)>;
 
+// Velocity Verlet steps for `periods` periods at dt; an InputError when that is not 1 to 1e10 steps.
+long harmonic_step_count(const HarmonicOscillator& oscillator, double dt, double periods);
+
 // Integrates from x = 1 m, v = 0 over `periods` periods T. Throws NumericalError when the energy
 // exceeds 4 E0 or is not finite (impossible for a stable run, whose energy never exceeds E0) and names
 // the stability limit when dt >= dt_c.
