@@ -1,14 +1,18 @@
 #include "core/cli.hpp"
 
 #include "core/errors.hpp"
+#include "core/gsl_checked.hpp"
 #include "core/output.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <signal.h>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 #include <toml++/toml.h>
@@ -142,10 +146,29 @@ int run_scene(const std::string& target, const std::vector<std::string>& assignm
     return exit_success;
 }
 
+// A run stopped by SIGINT, SIGTERM or SIGHUP removes its partial directory before it exits with 128 +
+// the signal's number. The signals are blocked in every thread (OpenMP's threads inherit the mask) and
+// taken by one watcher thread with sigwait, where removing a directory is safe, as it is not in a handler.
+void remove_partial_output_on_signal()
+{
+    static sigset_t stopping;
+    sigemptyset(&stopping);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+        sigaddset(&stopping, signal);
+    pthread_sigmask(SIG_BLOCK, &stopping, nullptr);
+    std::thread([] {
+        int signal = 0;
+        sigwait(&stopping, &signal);
+        remove_partial_directory_in_progress();
+        std::_Exit(128 + signal);
+    }).detach();
+}
+
 } // namespace
 
 int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
 {
+    use_status_codes_for_gsl_errors();
     CLI::App app{"softgrain: particles with shape degrees of freedom (SPD, DPM, VSM, SD)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", software_version());
@@ -184,8 +207,10 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
             list_scenes(scenes);
         else if (*describe)
             describe_scene(scenes.find(describe_name));
-        else if (*run)
+        else if (*run) {
+            remove_partial_output_on_signal();
             return run_scene(run_target, assignments, out_dir, quiet, checkpointing, scenes);
+        }
         return exit_success;
     } catch (const InputError& e) {
         std::cerr << "softgrain: bad input: " << e.what() << "\n";
@@ -193,6 +218,20 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     } catch (const NumericalError& e) {
         std::cerr << "softgrain: " << e.what() << "\n";
         return exit_numerical_failure;
+    } catch (const IoError& e) {
+        std::cerr << "softgrain: I/O failure: " << e.what() << "\n";
+        return exit_io_failure;
+    } catch (const fs::filesystem_error& e) {
+        std::cerr << "softgrain: I/O failure: " << e.what() << "\n";
+        return exit_io_failure;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "softgrain: out of memory: the run needs more memory than the machine gives it\n";
+        return exit_io_failure;
+    } catch (const std::exception& e) {
+        std::cerr << "softgrain: internal error (a defect of softgrain; please report it with the command "
+                     "line): "
+                  << e.what() << "\n";
+        return exit_internal_error;
     }
 }
 

@@ -3,6 +3,11 @@
 // InputError     -> exit code 2: bad input. The message names the key, the value and what is allowed.
 // NumericalError -> exit code 3: numerical trouble. The message names the quantity, the step and the
 //                   likely cause (e.g. a time step above the stability limit).
+// IoError        -> exit code 4: the machine refused: a file or directory that cannot be written (the path
+//                   and the system's reason), a full disk; std::bad_alloc and std::filesystem errors map
+//                   here.
+// anything else  -> exit code 5: an internal error (a defect of softgrain, to be reported).
+// In every case the run's partial output directory is removed: nothing half-written is left behind.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +33,15 @@ struct NumericalError : std::runtime_error
     std::int64_t step;
 };
 
+struct IoError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
 inline constexpr int exit_success = 0;
 inline constexpr int exit_bad_input = 2;
 inline constexpr int exit_numerical_failure = 3;
+inline constexpr int exit_io_failure = 4;
+inline constexpr int exit_internal_error = 5;
 
 } // namespace softgrain

@@ -1,11 +1,17 @@
 #include "core/output.hpp"
 
+#include "core/errors.hpp"
+
+#include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -44,12 +50,84 @@ std::string format_duration(double seconds)
     return out.str();
 }
 
+// The partial directory of the run in progress, for remove_partial_directory_in_progress (a signal).
+std::mutex in_progress_mutex;
+fs::path in_progress;
+
+void set_in_progress(const fs::path& partial)
+{
+    const std::lock_guard lock(in_progress_mutex);
+    in_progress = partial;
+}
+
+// Partial or set-aside directories of runs into `out_dir` whose process is gone (killed with SIGKILL, or a
+// machine that went down): `.<name>.partial-<pid>` and `.<name>.replaced-<pid>`. Those of live processes
+// are other runs' and stay.
+void remove_stale_partial_directories(const fs::path& out_dir)
+{
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(out_dir, error)) {
+        const std::string name = entry.path().filename().string();
+        for (const std::string marker : {".partial-", ".replaced-"}) {
+            const auto at = name.rfind(marker);
+            if (name.front() != '.' || at == std::string::npos) continue;
+            const std::string pid_text = name.substr(at + marker.size());
+            if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+            const long pid = std::stol(pid_text);
+            if (pid != getpid() && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+                fs::remove_all(entry.path(), error);
+        }
+    }
+}
+
+// A directory that a completed softgrain run wrote: the only thing a new run may replace.
+bool is_softgrain_result(const fs::path& dir)
+{
+    return fs::is_directory(dir) && fs::is_regular_file(dir / "summary.json");
+}
+
+// A run never deletes what it did not create: a plain file, or a directory that holds no summary.json.
+void refuse_to_replace_foreign(const fs::path& final_dir)
+{
+    if (fs::exists(fs::symlink_status(final_dir)) && !is_softgrain_result(final_dir))
+        throw IoError(final_dir.string() +
+                      " exists and is not the result of a softgrain run (no summary.json in it): refusing to "
+                      "replace it; choose another --out or move it away");
+}
+
+// Moves the completed partial directory into place. Runs that finish into the same place at once each move
+// what stands there aside (under a name of their own) and try again: the last complete result wins.
+void move_into_place(const fs::path& partial, const fs::path& final_dir)
+{
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, its bug 105329) on "." + a string + ...
+    std::string aside_name = ".";
+    aside_name += final_dir.filename().string();
+    aside_name += ".replaced-";
+    aside_name += std::to_string(getpid());
+    const fs::path aside = final_dir.parent_path() / aside_name;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        std::error_code error;
+        fs::rename(partial, final_dir, error);
+        if (!error) {
+            fs::remove_all(aside, error);
+            return;
+        }
+        if (error != std::errc::directory_not_empty && error != std::errc::file_exists)
+            throw fs::filesystem_error("moving the result into place", partial, final_dir, error);
+        refuse_to_replace_foreign(final_dir);
+        fs::remove_all(aside);
+        fs::rename(final_dir, aside, error); // fails when another run moved it first: then just try again
+    }
+    throw IoError("could not move " + partial.string() + " to " + final_dir.string() +
+                  ": other runs kept replacing it");
+}
+
 } // namespace
 
 Table::Table(const fs::path& path, const std::vector<Column>& columns, const std::string& preamble)
-    : stream_(path), width_(columns.size())
+    : path_(path), stream_(path), width_(columns.size())
 {
-    if (!stream_) throw std::runtime_error("cannot write " + path.string());
+    if (!stream_) throw IoError("cannot write " + path.string() + ": " + std::strerror(errno));
     stream_ << preamble;
     for (const auto& c : columns)
         stream_ << "# column " << c.name << " [" << c.unit << "]: " << c.description << "\n";
@@ -71,7 +149,7 @@ void Table::row(const std::vector<double>& values)
 void Table::close()
 {
     stream_.close();
-    if (stream_.fail()) throw std::runtime_error("writing a table failed (disk full?)");
+    if (stream_.fail()) throw IoError("writing " + path_.string() + " failed (disk full?)");
 }
 
 Progress::Progress(std::string label, bool enabled)
@@ -107,8 +185,11 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
       scene_name_(std::move(scene_name)), parameters_json_(parameters.to_json()), quiet_(quiet),
       start_(std::chrono::steady_clock::now())
 {
-    fs::remove_all(partial_dir_);
+    refuse_to_replace_foreign(final_dir_); // before the run, not after hours of it
+    remove_stale_partial_directories(out_dir);
+    fs::remove_all(partial_dir_); // a leftover of an earlier process with this pid
     fs::create_directories(partial_dir_);
+    set_in_progress(partial_dir_);
     std::ostringstream preamble;
     preamble << "# generator: softgrain " << software_version() << "\n"
              << "# scene: " << scene_name_ << "\n"
@@ -116,8 +197,16 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
     preamble_ = preamble.str();
 }
 
+void remove_partial_directory_in_progress()
+{
+    const std::lock_guard lock(in_progress_mutex);
+    std::error_code ignored;
+    if (!in_progress.empty()) fs::remove_all(in_progress, ignored);
+}
+
 RunContext::~RunContext()
 {
+    set_in_progress({});
     if (committed_) return;
     std::error_code ignored;
     tables_.clear();
@@ -153,10 +242,10 @@ fs::path RunContext::commit()
         std::ofstream out(partial_dir_ / "summary.json");
         out << summary_.dump(2) << "\n";
         out.close();
-        if (out.fail()) throw std::runtime_error("writing summary.json failed (disk full?)");
+        if (out.fail())
+            throw IoError("writing " + (partial_dir_ / "summary.json").string() + " failed (disk full?)");
     }
-    fs::remove_all(final_dir_);
-    fs::rename(partial_dir_, final_dir_);
+    move_into_place(partial_dir_, final_dir_);
     committed_ = true;
     if (checkpoints_) checkpoints_->discard();
     return final_dir_;

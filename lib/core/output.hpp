@@ -46,6 +46,7 @@ class Table
     void close();
 
   private:
+    std::filesystem::path path_;
     std::ofstream stream_;
     std::size_t width_;
 };
@@ -65,6 +66,11 @@ class Progress
     std::chrono::steady_clock::time_point start_, last_print_;
     bool printed_ = false;
 };
+
+// Removes the partial directory of the run in progress, if any: for a run stopped by a signal
+// (SIGINT, SIGTERM, SIGHUP), from the command line's signal watcher. Partial directories of runs killed
+// otherwise (SIGKILL) are removed by the next run into the same output directory.
+void remove_partial_directory_in_progress();
 
 class RunContext
 {

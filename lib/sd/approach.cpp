@@ -1,6 +1,7 @@
 #include "sd/approach.hpp"
 
 #include "core/errors.hpp"
+#include "core/gsl_checked.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -232,11 +233,12 @@ ApproachRun integrate_approach(const ApproachProblem& p, const IntegratorSetting
     const double tau0 = p.h0 / std::abs(initial.h_dot);
 
     const double first_step = settings.fixed_step ? settings.dt : 1e-3 * tau0;
-    std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(
-        gsl_odeiv2_driver_alloc_y_new(&ode, step_type(stepper.name), first_step, settings.tolerance, 0.0));
+    std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(checked_gsl_allocation(
+        gsl_odeiv2_driver_alloc_y_new(&ode, step_type(stepper.name), first_step, settings.tolerance, 0.0),
+        "the approach ODE (" + stepper.name + ")"));
     // Replace GSL's control by the delta-and-h control (the driver frees whatever control it holds).
     gsl_odeiv2_control_free(driver->c);
-    driver->c = gsl_odeiv2_control_alloc(&delta_h_control);
+    driver->c = checked_gsl_allocation(gsl_odeiv2_control_alloc(&delta_h_control), "the delta-and-h control");
     gsl_odeiv2_control_set_driver(driver->c, driver.get());
     gsl_odeiv2_driver_set_nmax(driver.get(), static_cast<unsigned long>(settings.max_steps));
 

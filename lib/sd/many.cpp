@@ -1,6 +1,7 @@
 #include "sd/many.hpp"
 
 #include "core/errors.hpp"
+#include "core/gsl_checked.hpp"
 #include "sd/pair_dynamics.hpp"
 
 #include <Eigen/Dense>
@@ -112,8 +113,10 @@ std::vector<ManySample> integrate_many(const ManyParticleSystem& system, std::ve
     const std::size_t dim = positions.size() + gaps.size();
     gsl_odeiv2_system sys{many_rhs, nullptr, dim, &ode};
     std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
-        gsl_odeiv2_driver_alloc_standard_new(&sys, gsl_odeiv2_step_rk8pd, output_times.front() * 1e-3,
-                                             tolerance * delta_scale, tolerance, 1.0, 0.0),
+        checked_gsl_allocation(
+            gsl_odeiv2_driver_alloc_standard_new(&sys, gsl_odeiv2_step_rk8pd, output_times.front() * 1e-3,
+                                                 tolerance * delta_scale, tolerance, 1.0, 0.0),
+            "the many-particle ODE (rk8pd)"),
         gsl_odeiv2_driver_free);
     std::vector<double> y(positions);
     y.insert(y.end(), gaps.begin(), gaps.end());

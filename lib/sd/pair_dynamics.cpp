@@ -1,10 +1,11 @@
 #include "sd/pair_dynamics.hpp"
 
 #include "core/errors.hpp"
+#include "core/gsl_checked.hpp"
 
 #include <cmath>
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+#include <gsl/gsl_math.h>
 #include <memory>
 #include <string>
 
@@ -54,18 +55,10 @@ double balanced_deflection(const ContactLaws& laws, double h, double F_ext)
             throw NumericalError("deflection balancing F_ext = " + std::to_string(F_ext), 0,
                                  "F_ela(a(h, delta), delta) never reaches F_ext: the elastic law is bounded");
     }
-    std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-        gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
-    gsl_root_fsolver_set(solver.get(), &residual, upper / 2.0 > 1e-12 * (1.0 + h) ? upper / 2.0 : 0.0, upper);
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        gsl_root_fsolver_iterate(solver.get());
-        const double low = gsl_root_fsolver_x_lower(solver.get());
-        const double high = gsl_root_fsolver_x_upper(solver.get());
-        if (gsl_root_test_interval(low, high, 0.0, 1e-15) == GSL_SUCCESS)
-            return gsl_root_fsolver_root(solver.get());
-    }
-    throw NumericalError("deflection balancing F_ext (Brent)", 200,
-                         "no convergence of the force balance eq. (1)");
+    const double lower = upper / 2.0 > 1e-12 * (1.0 + h) ? upper / 2.0 : 0.0;
+    // Relative tolerance 1e-15: delta to round-off, so that eq. (1) balances to its last digits.
+    return brent_root([&](double delta) { return GSL_FN_EVAL(&residual, delta); }, lower, upper, 0.0, 1e-15,
+                      "deflection balancing F_ext = " + std::to_string(F_ext) + " (force balance eq. (1))");
 }
 
 Loading constant_loading(double force)

@@ -1,10 +1,10 @@
 #include "spd/elastica.hpp"
 
 #include "core/errors.hpp"
+#include "core/gsl_checked.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
-#include <gsl/gsl_roots.h>
 
 #include <cmath>
 #include <functional>
@@ -43,8 +43,9 @@ ArcEnd integrate_arc(const ArcParameters& p)
 {
     ArcParameters params = p;
     gsl_odeiv2_system system{arc_rhs, nullptr, 4, &params};
-    gsl_odeiv2_driver* driver =
-        gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, 1e-3, 1e-12, 1e-12);
+    gsl_odeiv2_driver* driver = checked_gsl_allocation(
+        gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, 1e-3, 1e-12, 1e-12),
+        "the elastica ODE");
     double s = 0, y[4] = {p.c, 0.0, 0.0, 0.0};
     const int status = gsl_odeiv2_driver_apply(driver, &s, pi / 2 - p.c, y);
     gsl_odeiv2_driver_free(driver);
@@ -52,27 +53,10 @@ ArcEnd integrate_arc(const ArcParameters& p)
     return {y[0], y[1], y[2], y[3]};
 }
 
-// Brent root of f on [lo, hi] (f(lo), f(hi) of opposite signs), to 1e-12.
+// Brent root of f on [lo, hi] (f(lo), f(hi) of opposite signs), to 1e-13.
 double brent(const std::function<double(double)>& f, double lo, double hi, const char* what)
 {
-    gsl_function F{
-        [](double x, void* fn) { return (*static_cast<const std::function<double(double)>*>(fn))(x); },
-        const_cast<std::function<double(double)>*>(&f)};
-    gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    gsl_root_fsolver_set(solver, &F, lo, hi);
-    double root = lo;
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        gsl_root_fsolver_iterate(solver);
-        root = gsl_root_fsolver_root(solver);
-        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-13,
-                                   1e-13) == GSL_SUCCESS) {
-            gsl_root_fsolver_free(solver);
-            return root;
-        }
-    }
-    gsl_root_fsolver_free(solver);
-    throw NumericalError(std::string("elastica root (") + what + ")", 200,
-                         "Brent iteration did not converge");
+    return brent_root(f, lo, hi, 1e-13, 1e-13, std::string("elastica root (") + what + ")");
 }
 
 // lambda such that the tangent is vertical at the end of the quarter arc (inextensibility closes the ring).

@@ -148,3 +148,105 @@ TEST_CASE("a time step above the stability limit exits with code 3, names the li
     CHECK(fs::is_empty(dir)); // neither the scene directory nor a partial one
     fs::remove_all(dir);
 }
+
+TEST_CASE("an --out that cannot be written exits with code 4, names the path and leaves nothing behind")
+{
+    const fs::path dir = scratch_directory("unwritable");
+    write_file(dir / "plain", "not a directory\n");
+    const Outcome run = run_softgrain("run core.harmonic --quiet --out " + (dir / "plain").string());
+    CHECK(run.exit_code == 4);
+    CHECK(contains(run.output, "I/O failure"));
+    CHECK(contains(run.output, (dir / "plain").string()));
+    CHECK(fs::is_regular_file(dir / "plain"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a run never deletes what it did not create: a file or foreign directory where its result goes")
+{
+    const fs::path dir = scratch_directory("foreign");
+    write_file(dir / "core.harmonic", "the user's notes\n");
+    const Outcome over_file = run_softgrain("run core.harmonic --quiet --out " + dir.string());
+    CHECK(over_file.exit_code == 4);
+    CHECK(contains(over_file.output, "not the result of a softgrain run"));
+    CHECK(fs::is_regular_file(dir / "core.harmonic"));
+
+    fs::remove(dir / "core.harmonic");
+    fs::create_directories(dir / "core.harmonic");
+    write_file(dir / "core.harmonic" / "data.txt", "the user's data\n");
+    const Outcome over_directory = run_softgrain("run core.harmonic --quiet --out " + dir.string());
+    CHECK(over_directory.exit_code == 4);
+    CHECK(fs::is_regular_file(dir / "core.harmonic" / "data.txt"));
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1); // no partial directory
+
+    // A softgrain result (it has summary.json) is replaced by the next run of the same scene.
+    fs::remove_all(dir / "core.harmonic");
+    REQUIRE(run_softgrain("run core.harmonic --quiet --out " + dir.string()).exit_code == 0);
+    CHECK(run_softgrain("run core.harmonic --quiet --set periods=2 --out " + dir.string()).exit_code == 0);
+    const auto summary = nlohmann::json::parse(std::ifstream(dir / "core.harmonic" / "summary.json"));
+    CHECK(summary["parameters"]["periods"] == 2);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("identical runs finishing into the same --out at once all succeed; the last complete one stays")
+{
+    const fs::path dir = scratch_directory("concurrent");
+    const std::string run = std::string(SOFTGRAIN_EXECUTABLE) +
+                            " run core.harmonic --quiet --set periods=2 --out " + dir.string();
+    // 20 pairs: before the result was moved aside under a name of its own, 11 of 40 pairs had one run abort.
+    const std::string pairs = "for k in $(seq 20); do " + run + " & a=$!; " + run +
+                              " & b=$!; wait $a || echo FAILED; wait $b || echo FAILED; done";
+    const Outcome outcome = softgrain::verification::run_shell(pairs);
+    CHECK(outcome.exit_code == 0);
+    CHECK_FALSE(contains(outcome.output, "FAILED"));
+    CHECK(fs::is_regular_file(dir / "core.harmonic" / "summary.json"));
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1); // nothing left aside
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a GSL error is a diagnosed numerical failure (exit 3), never GSL's abort")
+{
+    const fs::path dir = scratch_directory("gsl");
+    // h0 = 1e308: the force balance of eq. (1) meets a non-finite function value in GSL's Brent solver, whose
+    // default handler aborted the process (exit 134) and left the partial directory behind.
+    const Outcome run = run_softgrain("run sd.approach --quiet --set h0=1e308 --out " + dir.string());
+    CHECK(run.exit_code == 3);
+    CHECK(contains(run.output, "numerical failure"));
+    CHECK(fs::is_empty(dir));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a run that cannot take the steps it is asked for is refused (exit 2), never exits 0 with nonsense")
+{
+    const fs::path dir = scratch_directory("steps");
+    const std::string out = " --quiet --out " + dir.string();
+    const Outcome tiny_dt = run_softgrain("run core.harmonic --set dt=1e-300" + out); // the count overflowed
+    CHECK(tiny_dt.exit_code == 2);
+    CHECK(contains(tiny_dt.output, "steps; allowed: 1 to 1e10 steps"));
+    const Outcome tiny_mass =
+        run_softgrain("run core.harmonic --set mass=1e-320" + out); // omega = inf: 0 steps
+    CHECK(tiny_mass.exit_code == 2);
+    CHECK(fs::is_empty(dir));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a run stopped by SIGTERM or SIGHUP removes its partial directory; a later run removes stale ones")
+{
+    const fs::path dir = scratch_directory("signal");
+    // periods = 1e6: 6e8 steps, far longer than the half second before the signal. (SIGINT takes the same
+    // path, but a non-interactive shell starts background commands with SIGINT ignored.)
+    for (const char* signal : {"TERM", "HUP"}) {
+        CAPTURE(signal);
+        const Outcome stopped = softgrain::verification::run_shell(
+            std::string(SOFTGRAIN_EXECUTABLE) + " run core.harmonic --quiet --set periods=1000000 --out " +
+            dir.string() + " & p=$!; sleep 0.5; kill -" + signal + " $p; wait $p; echo exit=$?");
+        CHECK(
+            contains(stopped.output, std::string("exit=") + (std::string(signal) == "TERM" ? "143" : "129")));
+        CHECK(fs::is_empty(dir));
+    }
+    // A partial directory whose process is gone (a SIGKILL): removed by the next run into the same place.
+    fs::create_directories(dir / ".core.harmonic.partial-2147483000");
+    REQUIRE(run_softgrain("run core.harmonic --quiet --out " + dir.string()).exit_code == 0);
+    CHECK_FALSE(fs::exists(dir / ".core.harmonic.partial-2147483000"));
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+    fs::remove_all(dir);
+}

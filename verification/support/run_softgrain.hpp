@@ -16,10 +16,10 @@ struct Outcome
     std::string output; // stdout and stderr
 };
 
-// `arguments` follow the executable on a shell command line; stderr is merged into the output.
-inline Outcome run_softgrain(const std::string& arguments)
+// A shell command line (sh -c); stderr is merged into the output.
+inline Outcome run_shell(const std::string& command_line)
 {
-    const std::string command = std::string(SOFTGRAIN_EXECUTABLE) + " " + arguments + " 2>&1";
+    const std::string command = "{ " + command_line + "; } 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr) throw std::runtime_error("cannot start: " + command);
     std::string output;
@@ -28,6 +28,12 @@ inline Outcome run_softgrain(const std::string& arguments)
         output += buffer.data();
     const int status = pclose(pipe);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// `arguments` follow the executable on a shell command line; stderr is merged into the output.
+inline Outcome run_softgrain(const std::string& arguments)
+{
+    return run_shell(std::string(SOFTGRAIN_EXECUTABLE) + " " + arguments);
 }
 
 } // namespace softgrain::verification
