@@ -2,9 +2,14 @@
 
 #include "core/errors.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <zlib.h>
 
 namespace softgrain {
 
@@ -25,6 +30,13 @@ std::string first_difference(const std::string& saved, const std::string& curren
                    " in the checkpoint, " + value.dump() + " here";
     return "a parameter of the checkpoint is unknown to this run";
 }
+// CRC-32 (zlib) of a checkpoint's content: detects a flipped bit or a truncation before anything is read.
+std::uint32_t crc32_of(const std::string& bytes)
+{
+    return static_cast<std::uint32_t>(
+        crc32_z(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()));
+}
+
 } // namespace
 
 void Archive::bytes(void* data, std::size_t size)
@@ -38,14 +50,30 @@ void Archive::bytes(void* data, std::size_t size)
     }
 }
 
+std::uint64_t Archive::remaining() const
+{
+    const auto position = static_cast<std::uint64_t>(in_->tellg());
+    return position <= size_ ? size_ - position : 0;
+}
+
+void Archive::check_length(std::uint64_t count, std::size_t element_size) const
+{
+    if (count > remaining() / element_size)
+        throw_corrupt(std::to_string(count) + " elements of " + std::to_string(element_size) +
+                      " bytes, with " + std::to_string(remaining()) + " bytes left");
+}
+
+void Archive::throw_corrupt(const std::string& what) const
+{
+    throw InputError("the checkpoint is corrupt (" + what + ")");
+}
+
 void Archive::operator()(std::string& text)
 {
     std::uint64_t n = text.size();
     (*this)(n);
     if (loading()) {
-        // A corrupt length would ask for an absurd allocation: strings of a checkpoint are short.
-        if (n > (1u << 26))
-            throw InputError("the checkpoint is corrupt (a text field of " + std::to_string(n) + " bytes)");
+        check_length(n, 1);
         text.resize(n);
     }
     bytes(text.data(), n);
@@ -68,21 +96,30 @@ bool Checkpoints::due() const
 void Checkpoints::save(const std::function<void(Archive&)>& state)
 {
     const fs::path temporary = file_.string() + ".writing";
+    const auto refuse = [&](const std::string& what) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored); // a half-written checkpoint is never left behind
+        throw IoError(what + " " + temporary.string() + ": " + std::strerror(errno));
+    };
+    std::ostringstream content(std::ios::binary);
+    Archive archive(content);
+    std::string format = format_line, scene = scene_, parameters = parameters_, version = version_,
+                end = end_marker;
+    archive(format);
+    archive(scene);
+    archive(parameters);
+    archive(version);
+    state(archive);
+    archive(end);
+    const std::string bytes = content.str();
+    const std::uint32_t checksum = crc32_of(bytes);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write the checkpoint " + temporary.string());
-        Archive archive(out);
-        std::string format = format_line, scene = scene_, parameters = parameters_, version = version_,
-                    end = end_marker;
-        archive(format);
-        archive(scene);
-        archive(parameters);
-        archive(version);
-        state(archive);
-        archive(end);
+        if (!out) refuse("cannot write the checkpoint");
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
         out.close();
-        if (out.fail())
-            throw std::runtime_error("writing the checkpoint " + temporary.string() + " failed (disk full?)");
+        if (out.fail()) refuse("writing failed (disk full?): the checkpoint");
     }
     fs::rename(temporary, file_);
     last_ = std::chrono::steady_clock::now();
@@ -92,9 +129,21 @@ void Checkpoints::save(const std::function<void(Archive&)>& state)
 bool Checkpoints::resume(const std::function<void(Archive&)>& state)
 {
     if (!resume_ || !fs::exists(file_)) return false;
-    std::ifstream in(file_, std::ios::binary);
-    if (!in) throw InputError("--resume: cannot read the checkpoint " + file_.string());
-    Archive archive(in);
+    std::ifstream file(file_, std::ios::binary);
+    if (!file) throw InputError("--resume: cannot read the checkpoint " + file_.string());
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::uint32_t checksum = 0;
+    if (bytes.size() < sizeof checksum)
+        throw InputError("--resume: the checkpoint " + file_.string() + " is truncated");
+    std::memcpy(&checksum, bytes.data() + bytes.size() - sizeof checksum, sizeof checksum);
+    bytes.resize(bytes.size() - sizeof checksum);
+    if (checksum != crc32_of(bytes))
+        throw InputError(
+            "--resume: the checkpoint " + file_.string() +
+            " is damaged (its CRC-32 does not match: a changed byte or a truncation); delete it to "
+            "start afresh");
+    std::istringstream in(bytes, std::ios::binary);
+    Archive archive(in, bytes.size());
     std::string format, scene, parameters, version, end;
     archive(format);
     if (format != format_line)

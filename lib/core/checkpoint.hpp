@@ -8,8 +8,10 @@
 // bytes, Eigen matrices as their sizes and coefficients, containers element by element.
 //
 // File: the line "softgrain checkpoint 1", then the scene name, the parameters (JSON), the software
-// version, the scene's state and an end marker. It is written to a temporary file and renamed into place,
-// so a run killed while writing leaves the previous checkpoint intact.
+// version, the scene's state, an end marker, and the CRC-32 (zlib) of all that. It is written to a temporary
+// file and renamed into place, so a run killed while writing leaves the previous checkpoint intact. A
+// checkpoint whose checksum does not match (a flipped bit, a truncation) is refused before any of it is
+// read, and every length read from it is bounded by the bytes that remain.
 #pragma once
 
 #include <Eigen/Core>
@@ -43,8 +45,9 @@ concept FreeTransfer = requires(T& value, Archive& archive)
 class Archive
 {
   public:
-    explicit Archive(std::ofstream& out) : out_(&out) {}
-    explicit Archive(std::ifstream& in) : in_(&in) {}
+    explicit Archive(std::ostream& out) : out_(&out) {}
+    // Reads `size` bytes from `in`: no length read from them may ask for more than remains.
+    Archive(std::istream& in, std::uint64_t size) : in_(&in), size_(size) {}
 
     bool loading() const { return in_ != nullptr; }
 
@@ -72,7 +75,10 @@ class Archive
     {
         std::uint64_t n = items.size();
         (*this)(n);
-        if (loading()) items.resize(n);
+        if (loading()) {
+            check_length(n, std::is_trivially_copyable_v<T> ? sizeof(T) : 1);
+            items.resize(n);
+        }
         if constexpr (std::is_trivially_copyable_v<T>)
             bytes(items.data(), n * sizeof(T));
         else
@@ -98,7 +104,14 @@ class Archive
         std::int64_t rows = matrix.rows(), cols = matrix.cols();
         (*this)(rows);
         (*this)(cols);
-        if (loading()) matrix.resize(rows, cols);
+        if (loading()) {
+            if (rows < 0 || cols < 0 ||
+                (cols > 0 &&
+                 static_cast<std::uint64_t>(rows) > remaining() / static_cast<std::uint64_t>(cols)))
+                throw_corrupt("a matrix of " + std::to_string(rows) + " x " + std::to_string(cols));
+            check_length(static_cast<std::uint64_t>(rows * cols), sizeof(Scalar));
+            matrix.resize(rows, cols);
+        }
         bytes(matrix.data(), static_cast<std::size_t>(rows * cols) * sizeof(Scalar));
     }
 
@@ -112,8 +125,13 @@ class Archive
 
   private:
     void bytes(void* data, std::size_t size);
-    std::ofstream* out_ = nullptr;
-    std::ifstream* in_ = nullptr;
+    std::uint64_t remaining() const;
+    // Refuses a count of elements of `element_size` bytes that the rest of the file cannot hold.
+    void check_length(std::uint64_t count, std::size_t element_size) const;
+    [[noreturn]] void throw_corrupt(const std::string& what) const;
+    std::ostream* out_ = nullptr;
+    std::istream* in_ = nullptr;
+    std::uint64_t size_ = 0;
 };
 
 // Where a run keeps its checkpoint and how often it writes one. Scenes that support checkpoints (Scene::
