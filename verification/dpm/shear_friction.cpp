@@ -82,9 +82,9 @@ TEST_CASE(
     const FrozenContactScan scan = frozen_contact_scan(r.system, r.x_star, 21, 21);
     // The starred configuration evaluated again: the same forces to round-off.
     CHECK_CLOSE(scan.mu_eff_star, r.mu_eff_max, (Tolerance{1e-12, 0}));
-    // The line through the star contains the star, so its maximum cannot be lower; the shear test samples
-    // x every 0.004 D_beta on a smooth curve, so the frozen maximum is the paper's 0.190 within the same 3 %.
-    CHECK(scan.mu_eff_max_at_star_height >= scan.mu_eff_star);
+    // The shear test samples x every 0.004 D_beta on a smooth curve, so the frozen maximum along the line
+    // through the star is the paper's 0.190 within the same 3 %. (That it is not below the star's value holds
+    // by construction, frozen_contact_scan starts its maximum there, so it is not checked.)
     CHECK_CLOSE(scan.mu_eff_max_at_star_height, 0.190, (Tolerance{3e-2, 0}));
     // The paper: F_mb != 0 over the whole range, and mu_eff finite (not zero) in the zero-overlap limit.
     CHECK(scan.min_force > 0);
