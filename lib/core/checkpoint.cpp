@@ -4,9 +4,12 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fcntl.h>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <zlib.h>
@@ -81,10 +84,42 @@ void Archive::operator()(std::string& text)
 
 Checkpoints::Checkpoints(fs::path file, double interval_seconds, bool resume, std::string scene,
                          std::string parameters, std::string version)
-    : file_(std::move(file)), interval_(interval_seconds), resume_(resume), scene_(std::move(scene)),
-      parameters_(std::move(parameters)), version_(std::move(version)),
-      last_(std::chrono::steady_clock::now())
+    : file_(std::move(file)), lock_file_(file_.string() + ".lock"), interval_(interval_seconds),
+      resume_(resume), scene_(std::move(scene)), parameters_(std::move(parameters)),
+      version_(std::move(version)), last_(std::chrono::steady_clock::now())
 {
+    fs::create_directories(file_.parent_path());
+    lock_descriptor_ = ::open(lock_file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock_descriptor_ < 0)
+        throw IoError("cannot create the checkpoint lock " + lock_file_.string() + ": " +
+                      std::strerror(errno));
+    const std::string allowed = "; allowed: another --out, or waiting for that run to end";
+    if (::flock(lock_descriptor_, LOCK_EX | LOCK_NB) != 0) {
+        ::close(lock_descriptor_);
+        lock_descriptor_ = -1; // the lock file is the other run's: leave it
+        throw InputError("the checkpoint " + file_.string() + " belongs to another run that is still going" +
+                         allowed);
+    }
+    if (!resume_ && fs::exists(file_)) {
+        release_lock();
+        throw InputError("the checkpoint " + file_.string() +
+                         " of an earlier run is there, and this run would overwrite it; allowed: --resume to "
+                         "continue that run, another --out, or removing the file");
+    }
+}
+
+Checkpoints::~Checkpoints()
+{
+    release_lock();
+}
+
+// The lock file goes first, then the lock: a run that opens the name afterwards creates a new file.
+void Checkpoints::release_lock()
+{
+    if (lock_descriptor_ < 0) return;
+    ::unlink(lock_file_.c_str());
+    ::close(lock_descriptor_);
+    lock_descriptor_ = -1;
 }
 
 bool Checkpoints::due() const

@@ -142,8 +142,14 @@ class Checkpoints
   public:
     // file: the checkpoint's path; interval_seconds: wall time between checkpoints (0: never);
     // identity: scene name, parameters (JSON text) and software version, all of which must match to resume.
+    // The file is held under an exclusive lock (file.lock) for the run's lifetime. Refused with InputError
+    // (exit 2), so that a run never overwrites or deletes a checkpoint it did not write: a file that another
+    // live run holds, and without `resume`, a checkpoint left by an earlier run.
     Checkpoints(std::filesystem::path file, double interval_seconds, bool resume, std::string scene,
                 std::string parameters, std::string version);
+    ~Checkpoints();
+    Checkpoints(const Checkpoints&) = delete;
+    Checkpoints& operator=(const Checkpoints&) = delete;
 
     // True once the interval has passed since the start or the last checkpoint.
     bool due() const;
@@ -160,7 +166,11 @@ class Checkpoints
     bool resumed() const { return resumed_; }
 
   private:
+    void release_lock();
+
     std::filesystem::path file_;
+    std::filesystem::path lock_file_;
+    int lock_descriptor_ = -1;
     double interval_;
     bool resume_;
     std::string scene_, parameters_, version_;

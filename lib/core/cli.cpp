@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <signal.h>
 #include <thread>
 
@@ -131,12 +132,26 @@ std::unique_ptr<Checkpoints> checkpoints_for(const Scene& scene, const RunReques
                                          request.parameters.to_json().dump(), software_version());
 }
 
+// A run whose memory estimate exceeds what the machine has is refused before it starts (exit 2); the message
+// names the parameters the estimate counts, with their values.
+void refuse_absurd_size(const Scene& scene, const Parameters& parameters)
+{
+    const MemoryEstimate need = scene.memory(parameters);
+    const nlohmann::json values = parameters.to_json();
+    std::string named;
+    for (const auto& spec : scene.parameters)
+        if (std::regex_search(need.basis, std::regex("\\b" + spec.name + "\\b")))
+            named += (named.empty() ? "" : ", ") + spec.name + " = " + values[spec.name].dump();
+    refuse_if_memory_exceeds(need, available_memory_bytes(), named);
+}
+
 int run_scene(const std::string& target, const std::vector<std::string>& assignments,
               const std::string& out_dir, bool quiet, const CheckpointRequest& checkpointing,
               const SceneRegistry& scenes)
 {
     RunRequest request = resolve_scene(target, scenes);
     apply_overrides(request.parameters, assignments);
+    if (request.scene->memory) refuse_absurd_size(*request.scene, request.parameters);
     auto checkpoints = checkpoints_for(*request.scene, request, checkpointing, out_dir, scenes);
     RunContext context(out_dir, request.output_name, request.parameters, quiet);
     context.enable_checkpoints(std::move(checkpoints));

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -37,6 +38,16 @@ struct IoError : std::runtime_error
 {
     using std::runtime_error::runtime_error;
 };
+
+// A number as messages show it: `digits` significant digits, "inf" and "nan" spelled out (std::to_string
+// shows 1e-300 as 0.000000).
+inline std::string number_text(double value, int digits = 6)
+{
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    return out.str();
+}
 
 inline constexpr int exit_success = 0;
 inline constexpr int exit_bad_input = 2;

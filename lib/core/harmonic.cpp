@@ -42,9 +42,9 @@ long harmonic_step_count(const HarmonicOscillator& oscillator, double dt, double
     constexpr double max_steps = 1e10;
     const double wanted = std::ceil(periods * oscillator.period() / dt);
     if (!(wanted >= 1 && wanted <= max_steps))
-        throw InputError("periods = " + std::to_string(periods) +
-                         " of T = 2 pi sqrt(m/k) = " + std::to_string(oscillator.period()) +
-                         " s at dt = " + std::to_string(dt) + " s ask for " + std::to_string(wanted) +
+        throw InputError("periods = " + number_text(periods) +
+                         " of T = 2 pi sqrt(m/k) = " + number_text(oscillator.period()) +
+                         " s at dt = " + number_text(dt) + " s ask for " + number_text(wanted) +
                          " steps; allowed: 1 to 1e10 steps (check mass, stiffness, dt)");
     return static_cast<long>(wanted);
 }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iomanip>
@@ -28,6 +29,16 @@ std::string software_version()
     return SOFTGRAIN_VERSION;
 }
 
+nlohmann::json value_or_null(std::optional<double> value)
+{
+    return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json finite_or_null(double value)
+{
+    return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
 namespace {
 
 double peak_memory_mib()
@@ -35,6 +46,23 @@ double peak_memory_mib()
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux reports KiB
+}
+
+// JSON has no NaN or infinity, and nlohmann::json writes both as null, which summary.json keeps for "not
+// applicable" (a quantity this run does not have). A number that was computed and is not finite (a failed
+// fit, 0/0, a blow-up) is spelled as the string "nan", "inf" or "-inf" instead, so the two never mix.
+void spell_non_finite_numbers(nlohmann::json& value)
+{
+    if (value.is_number_float()) {
+        const double x = value.get<double>();
+        if (std::isnan(x))
+            value = "nan";
+        else if (std::isinf(x))
+            value = x > 0 ? "inf" : "-inf";
+    } else if (value.is_structured()) {
+        for (auto& item : value)
+            spell_non_finite_numbers(item);
+    }
 }
 
 std::string format_duration(double seconds)
@@ -239,6 +267,7 @@ fs::path RunContext::commit()
         summary_["resumed_from_checkpoint"] = checkpoints_->resumed();
     }
     {
+        spell_non_finite_numbers(summary_);
         std::ofstream out(partial_dir_ / "summary.json");
         out << summary_.dump(2) << "\n";
         out.close();

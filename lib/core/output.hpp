@@ -16,12 +16,20 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace softgrain {
+
+// summary.json spells a quantity this run does not have ("not applicable": no flat contact yet, a fit with
+// too few points, no failure before the end) as null; a computed value that is not finite is spelled "nan",
+// "inf" or "-inf" when the summary is written (RunContext::commit), so the two never mix.
+nlohmann::json value_or_null(std::optional<double> value);
+// For the laws that mark "not applicable" with NaN: null for NaN (and infinities), the value otherwise.
+nlohmann::json finite_or_null(double value);
 
 // Wall-clock seconds since `start`: costs reported in summaries and benchmarks, never asserted.
 inline double seconds_since(std::chrono::steady_clock::time_point start)

@@ -15,11 +15,7 @@ namespace {
 
 std::string format_number(double x)
 {
-    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-    std::ostringstream out;
-    out.precision(12);
-    out << x;
-    return out.str();
+    return number_text(x, 12);
 }
 
 std::string join(const std::vector<std::string>& words, const std::string& separator)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/parameters.hpp"
+#include "core/resources.hpp"
 
 #include <functional>
 #include <string>
@@ -23,6 +24,16 @@ struct Scene
     std::function<void(const Parameters&, RunContext&)> run;
     // Long runs write checkpoints and can be resumed (RunContext::checkpoints, `run --resume`).
     bool checkpoints = false;
+    // The memory the run needs at these parameters, checked before it starts (absent: a scene of fixed,
+    // small size).
+    std::function<MemoryEstimate(const Parameters&)> memory = nullptr;
+
+    // This scene with its memory estimate: registry.add(Scene{...}.needing(estimate)).
+    Scene needing(std::function<MemoryEstimate(const Parameters&)> estimate) &&
+    {
+        memory = std::move(estimate);
+        return std::move(*this);
+    }
 };
 
 class SceneRegistry

@@ -97,9 +97,9 @@ void run_compress3d(const Parameters& p, RunContext& context)
     s["nu"] = r.nu;
     s["vertices"] = r.vertices;
     s["small_strain_exponent"] =
-        json_or_null(exponent_in_window(c, o.schedule.delta_min, p.real("small_fit_max")));
-    s["large_strain_exponent"] = json_or_null(exponent_in_window(c, p.real("fit_min"), p.real("fit_max")));
-    s["pole_contact_exponent"] = json_or_null(pole_contact_exponent(c));
+        value_or_null(exponent_in_window(c, o.schedule.delta_min, p.real("small_fit_max")));
+    s["large_strain_exponent"] = value_or_null(exponent_in_window(c, p.real("fit_min"), p.real("fit_max")));
+    s["pole_contact_exponent"] = value_or_null(pole_contact_exponent(c));
     s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
     s["contacts_at_max"] = c.samples.back().top_contacts;
     s["F_tilde_at_max"] = c.samples.back().force * scale;

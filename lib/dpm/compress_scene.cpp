@@ -11,11 +11,6 @@
 
 namespace softgrain::dpm {
 
-nlohmann::json json_or_null(std::optional<double> value)
-{
-    return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-}
-
 void run_compress2d(const Parameters& p, RunContext& context)
 {
     CompressionOptions o;
@@ -61,9 +56,9 @@ void run_compress2d(const Parameters& p, RunContext& context)
     s["diameter"] = r.diameter;
     s["E"] = E;
     s["nu"] = nu;
-    s["small_strain_exponent"] = json_or_null(log_log_slope(fit_delta, fit_force));
+    s["small_strain_exponent"] = value_or_null(log_log_slope(fit_delta, fit_force));
     // The exponent of eq. (9.14) over the same forces: its local slope 1 + 1/(1 + ln(pi/(D~^3 F~))) > 1.
-    s["eq_9_14_exponent"] = json_or_null(log_log_slope(fit_delta_cylinder, fit_force));
+    s["eq_9_14_exponent"] = value_or_null(log_log_slope(fit_delta_cylinder, fit_force));
     if (network) {
         s["network_nodes"] = o.network_nodes;
         s["network_springs"] = r.springs;

@@ -17,7 +17,4 @@ namespace softgrain::dpm {
 void run_compress2d(const Parameters& p, RunContext& context);
 std::vector<ParameterSpec> compress2d_parameters();
 
-// A summary value, or null when there is none.
-nlohmann::json json_or_null(std::optional<double> value);
-
 } // namespace softgrain::dpm

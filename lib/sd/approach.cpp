@@ -139,10 +139,7 @@ struct DriverDeleter
 
 std::string describe(double value)
 {
-    std::ostringstream out;
-    out.precision(4);
-    out << value;
-    return out.str();
+    return number_text(value, 4);
 }
 
 } // namespace

@@ -43,11 +43,6 @@ ApproachProblem pair_problem(double kappa, double h0, double h_min)
     return {m, paper_contact_laws(m), constant_loading(kappa), h0, h_min};
 }
 
-nlohmann::json optional_value(const std::optional<double>& v)
-{
-    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
 std::vector<ParameterSpec> integrator_parameters()
 {
     return {
@@ -139,7 +134,7 @@ void run_approach(const Parameters& p, RunContext& ctx)
     regime("hertz", an.hertz);
     const ApproachSample& first = run.samples.front();
     const ApproachSample& last = run.samples.back();
-    sum["h_crossover"] = optional_value(an.h_crossover);
+    sum["h_crossover"] = value_or_null(an.h_crossover);
     sum["kappa_crossover_exact"] =
         an.h_crossover ? nlohmann::json(crossover_kappa_paper(problem.material, *an.h_crossover))
                        : nlohmann::json(nullptr);
@@ -267,11 +262,35 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
         sum["crossover_prefactor"] = nullptr;
     }
     sum["poiseuille_decades_at_kappa_min"] = decades.front();
-    sum["kappa_poiseuille_vanishes"] =
-        std::isnan(kappa_vanishes) ? nlohmann::json(nullptr) : nlohmann::json(kappa_vanishes);
-    sum["kappa_poiseuille_last"] =
-        std::isnan(kappa_last_window) ? nlohmann::json(nullptr) : nlohmann::json(kappa_last_window);
+    sum["kappa_poiseuille_vanishes"] = finite_or_null(kappa_vanishes);
+    sum["kappa_poiseuille_last"] = finite_or_null(kappa_last_window);
     sum["poiseuille_window_nonincreasing"] = std::is_sorted(decades.rbegin(), decades.rend());
+}
+
+// The centres carry the deflection through eq. (2), |X_ij| = 2R + h - 2 delta: a deflection below what the
+// centre distance resolves to the integration tolerance (|X| ulp / tolerance) would give F_ela = 0 and a
+// system that never moves (force = 1e-30 once ran to exit 0 with the gaps unchanged).
+void refuse_unresolved_deflection(double delta0, double distance0, double tolerance, double force)
+{
+    const double resolved = (std::nextafter(distance0, 2 * distance0) - distance0) / tolerance;
+    if (!(delta0 >= resolved))
+        throw InputError("'force' = " + number_text(force) +
+                         " gives the elastic deflection delta0 = " + number_text(delta0) +
+                         " R, which the centre distance |X| = " + number_text(distance0) +
+                         " R resolves only to " + number_text(resolved) +
+                         " R at tolerance = " + number_text(tolerance) +
+                         "; allowed: a force whose deflection is resolved (a larger force or tolerance)");
+}
+
+// The run is asked to bring the smallest gap to h_min (the integration stops there, or at the pair
+// reference's approach time, which the integration tolerance lets it miss by far less than 1e-6 h_min);
+// a run that stops short ends as a diagnosed failure, never as a summary.
+void require_approach_completed(double gap_final, double h_min, long steps)
+{
+    if (!(gap_final <= h_min * (1 + 1e-6)))
+        throw NumericalError("the smallest gap, h = " + number_text(gap_final) + " R", steps,
+                             "it did not reach h_min = " + number_text(h_min) +
+                                 " R by the pair reference's approach time");
 }
 
 void run_many(const Parameters& p, RunContext& ctx)
@@ -291,6 +310,7 @@ void run_many(const Parameters& p, RunContext& ctx)
     const double pair_force = line ? F : F / std::sqrt(3.0);
     const double delta0 = balanced_deflection(system.laws, h0, pair_force);
     const double distance0 = 2.0 * m.radius + h0 - 2.0 * delta0; // eq. (2)
+    refuse_unresolved_deflection(delta0, distance0, p.real("tolerance"), F);
     std::vector<double> positions;
     if (line) {
         for (long long i = 0; i < n; ++i)
@@ -373,6 +393,8 @@ void run_many(const Parameters& p, RunContext& ctx)
         }
         residual_max = std::max(residual_max, s.rates.residual);
     }
+    const double gap_final = *std::min_element(samples.back().gaps.begin(), samples.back().gaps.end());
+    require_approach_completed(gap_final, h_min, steps);
     auto& sum = ctx.summary();
     sum["particles"] = n;
     sum["bonds"] = system.bonds.size();
@@ -382,7 +404,7 @@ void run_many(const Parameters& p, RunContext& ctx)
     sum["pair_reference_error_max"] = pair_error_max;
     sum["pair_force_residual_max"] = balance_max;
     sum["linear_system_residual_max"] = residual_max;
-    sum["gap_final_min"] = *std::min_element(samples.back().gaps.begin(), samples.back().gaps.end());
+    sum["gap_final_min"] = gap_final;
     sum["t_final"] = samples.back().t * F;
 }
 

@@ -4,6 +4,7 @@
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
 #include "spd/compaction.hpp"
+#include "spd/shell_model.hpp"
 #include "spd/spd_scenes.hpp"
 
 #include <gsl/gsl_fit.h>
@@ -185,9 +186,6 @@ void run_compaction(const Parameters& p, RunContext& ctx)
                               W_mean > 0 ? snap.energy[i] / W_mean : NAN});
             }
     }
-    const auto or_null = [](double v) {
-        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-    };
     auto& s = ctx.summary();
     const CompactionState& first = r.states.front();
     const CompactionState& last = r.states.back();
@@ -196,12 +194,12 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     s["e_after_unloading"] = void_ratio(last);
     s["strain_at_max"] = end_of_loading->strain;
     s["sigma_over_sigmastar_max"] = sigma_max;
-    s["compressibility_index"] = or_null(-slope);
-    s["compressibility_fit_e0"] = or_null(e0_fit);
+    s["compressibility_index"] = finite_or_null(-slope);
+    s["compressibility_fit_e0"] = finite_or_null(e0_fit);
     s["compressibility_fit_points"] = log_sigma.size();
-    s["dVs_over_dV_at_strain_max"] = or_null(volume_share(*end_of_loading));
+    s["dVs_over_dV_at_strain_max"] = finite_or_null(volume_share(*end_of_loading));
     s["dVs_over_dV_peak"] = dVs_peak;
-    s["residual_strain"] = or_null(residual_strain);
+    s["residual_strain"] = finite_or_null(residual_strain);
     s["wall_force_mismatch_max"] = mismatch;
     s["deposit_bottom_force_over_weight"] =
         r.deposit.bottom_force / (r.deposit.weight * setup.assembly.particles);
@@ -221,6 +219,10 @@ void run_compaction(const Parameters& p, RunContext& ctx)
 
 void register_spd_assembly_scenes(SceneRegistry& registry)
 {
+    const auto rings_memory = [](const Parameters& p) {
+        return spd::shell_model_memory(double(p.integer("particles")) * double(p.integer("nodes")),
+                                       "vertices (particles x nodes)");
+    };
     registry.add(Scene{
         "spd.bench",
         "SPD speed: elastic rings colliding in a box; vertex-steps per second of the time-step loop",
@@ -234,7 +236,8 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
                                 "(decision spd-vertex-pair-stability)")
                 .positive(),
         },
-        run_bench});
+        run_bench}
+                     .needing(rings_memory));
     registry.add(Scene{
         "spd.compaction",
         "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell rings "
@@ -279,7 +282,8 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             ParameterSpec::seed("seed", 1, "seed of the radii and of the deposition"),
         },
         run_compaction,
-        /*checkpoints=*/true});
+        /*checkpoints=*/true}
+                     .needing(rings_memory));
 }
 
 } // namespace softgrain

@@ -870,6 +870,11 @@ Vec2 ShellModel::contact_force_on(int shell) const
     return F;
 }
 
+MemoryEstimate shell_model_memory(double vertices, const std::string& what)
+{
+    return per_item_memory(vertices, 530.0, what);
+}
+
 } // namespace softgrain::spd
 
 namespace softgrain::spd {

@@ -6,6 +6,7 @@
 #include "spd/beam.hpp"
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
+#include "spd/shell_model.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -264,12 +265,9 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     }
     if (unload) write_shape(-1.0, 0.0, r.released_x, r.released_y);
     auto& s = ctx.summary();
-    const auto or_null = [](double v) {
-        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-    };
-    s["contact_length_slope"] = or_null(fitted_slope(eps_late, lc_late));
+    s["contact_length_slope"] = finite_or_null(fitted_slope(eps_late, lc_late));
     s["volume_deviation_max"] = volume_deviation;
-    s["force_contact_slope"] = or_null(fitted_slope(lc_over_l, f_ratio));
+    s["force_contact_slope"] = finite_or_null(fitted_slope(lc_over_l, f_ratio));
     s["shape_residual_after_unload"] = unload ? nlohmann::json(r.shape_residual) : nlohmann::json(nullptr);
     const CompressionState* last = nullptr;
     for (const CompressionState& st : r.states)
@@ -289,7 +287,7 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
         s["eps_early"] = early.strain;
         s["contact_vertices_early"] = early.contact_vertices;
         s["centre_pressure_over_pstar_early"] = shape.centre_pressure / sc.characteristic.p_star;
-        s["centre_force_share_early"] = or_null(shape.centre_share);
+        s["centre_force_share_early"] = finite_or_null(shape.centre_share);
         const auto first = std::find_if(r.states.begin(), r.states.end(), [](const CompressionState& st) {
             return st.loading && st.contact_vertices > 0;
         });
@@ -307,7 +305,7 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
         double excess = -INFINITY;
         for (std::size_t k = 0; k < lc_over_l.size(); ++k)
             excess = std::max(excess, f_ratio[k] - lc_over_l[k]);
-        s["force_contact_excess_max"] = or_null(excess);
+        s["force_contact_excess_max"] = finite_or_null(excess);
     }
     // Shape of the late force growth (Fig. 25): relative second differences of F and of ln F over the
     // loading states nearest to 1/2, 3/4 and 1 of the largest strain; 0 for a linear law (F) or an
@@ -317,21 +315,22 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
                                *b = &loading_state_nearest(r.states, 0.75 * last->strain);
         const double Fa = a->wall_force, Fb = b->wall_force, Fc = last->wall_force;
         const bool positive = Fa > 0 && Fb > 0 && Fc > 0 && a != b && b != last;
-        s["force_second_difference"] = or_null(positive ? (Fc - 2 * Fb + Fa) / (Fc - Fa) : NAN);
-        s["log_force_second_difference"] =
-            or_null(positive ? (std::log(Fc) - 2 * std::log(Fb) + std::log(Fa)) / std::log(Fc / Fa) : NAN);
+        s["force_second_difference"] = finite_or_null(positive ? (Fc - 2 * Fb + Fa) / (Fc - Fa) : NAN);
+        s["log_force_second_difference"] = finite_or_null(
+            positive ? (std::log(Fc) - 2 * std::log(Fb) + std::log(Fa)) / std::log(Fc / Fa) : NAN);
         if (elastica) {
             const double Ea = elastica_ring_between_plates(a->strain).force,
                          Eb = elastica_ring_between_plates(b->strain).force,
                          Ec = elastica_ring_between_plates(last->strain).force;
-            s["elastica_force_second_difference"] = or_null(positive ? (Ec - 2 * Eb + Ea) / (Ec - Ea) : NAN);
+            s["elastica_force_second_difference"] =
+                finite_or_null(positive ? (Ec - 2 * Eb + Ea) / (Ec - Ea) : NAN);
         }
     }
-    s["eq35_ratio_final"] =
-        or_null(last->contact_vertices > 0
-                    ? last->wall_force / F_star /
-                          ((1 + last->core_pressure * setup.material.s * l / F_star) * last->contact_vertices)
-                    : NAN);
+    s["eq35_ratio_final"] = finite_or_null(
+        last->contact_vertices > 0
+            ? last->wall_force / F_star /
+                  ((1 + last->core_pressure * setup.material.s * l / F_star) * last->contact_vertices)
+            : NAN);
     s["a_over_b0_final"] = last->width;
     s["Lc_over_b0_final"] = last->contact_length;
     s["V_over_V0_final"] = last->volume;
@@ -348,11 +347,11 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     // How the wall force is carried at the last loading state: by the two outermost contact vertices
     // (the elastica: entirely, as two line loads at the edges of the flat) or by a plateau (the paper).
     const ProfileShape final_shape = profile_shape(*last, l);
-    s["edge_force_fraction_final"] = or_null(final_shape.edge_share);
-    s["edge_zone_force_fraction_final"] = or_null(final_shape.edge_zone_share);
+    s["edge_force_fraction_final"] = finite_or_null(final_shape.edge_share);
+    s["edge_zone_force_fraction_final"] = finite_or_null(final_shape.edge_zone_share);
     s["centre_pressure_over_pstar_final"] = final_shape.centre_pressure / sc.characteristic.p_star;
     if (elastica) {
-        s["elastica_contact_length_slope"] = or_null(fitted_slope(eps_late, lc_late_elastica));
+        s["elastica_contact_length_slope"] = finite_or_null(fitted_slope(eps_late, lc_late_elastica));
         s["elastica_volume_deviation_max"] = el_volume_deviation;
         s["elastica_width_error_max"] = err_a;
         s["elastica_volume_error_max"] = err_V;
@@ -410,16 +409,23 @@ void register_spd_scenes(SceneRegistry& registry)
     };
     for (auto spec : material_parameters(0.05))
         beam.push_back(spec);
+    const auto ring_memory = [](const Parameters& p) {
+        return spd::shell_model_memory(double(p.integer("nodes")), "vertices (nodes)");
+    };
     registry.add(
         Scene{"spd.beam",
               "SPD section 3: cantilever or simply supported beam under a point force, against beam theory",
-              beam, run_beam});
+              beam, run_beam}
+            .needing([](const Parameters& p) {
+                return spd::shell_model_memory(double(p.integer("nodes")), "vertices (nodes)");
+            }));
     registry.add(Scene{
         "spd.ring_pressure",
         "SPD eqs. (19)-(25): ring under small internal pressure; K_shell and K_e against theory",
         ring_parameters(
             {ParameterSpec::real("pressure", 0.05, "Pa", "applied internal pressure (small)").positive()}),
-        run_ring_pressure});
+        run_ring_pressure}
+                     .needing(ring_memory));
     registry.add(Scene{
         "spd.ring_compression",
         "SPD section 4: quasi-static diametral compression of a ring between rigid walls, with the elastica "
@@ -435,7 +441,8 @@ void register_spd_scenes(SceneRegistry& registry)
                                 "relaxation criterion: largest unbalanced force over min(EI/R^2, F**)")
                 .positive(),
         }),
-        run_ring_compression});
+        run_ring_compression}
+                     .needing(ring_memory));
     register_spd_assembly_scenes(registry);
     register_spd_tissue_scenes(registry);
 }

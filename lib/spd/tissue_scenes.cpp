@@ -1,6 +1,7 @@
 // Scene spd.tissue (Trivino et al., section 6, Figs. 30-34): tensile fracture of a cellular tissue.
 #include "core/errors.hpp"
 #include "core/output.hpp"
+#include "spd/shell_model.hpp"
 #include "spd/spd_scenes.hpp"
 #include "spd/tissue.hpp"
 
@@ -43,11 +44,6 @@ std::size_t nearest_snapshot(const std::vector<TissueSnapshot>& snaps, double st
     for (std::size_t k = 0; k < snaps.size(); ++k)
         if (std::abs(snaps[k].strain - strain) < std::abs(snaps[best].strain - strain)) best = k;
     return best;
-}
-
-nlohmann::json or_null(double v)
-{
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
 // The measures of Fig. 33 on the recorded curve (decision spd-tissue-measures): sigma = F_top/(W s), its
@@ -249,20 +245,20 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     s["yield_zeta_at_shear_break"] = yield_function(std::abs(law.f_n0), law.f_t0 * std::sqrt(2.0), law);
     s["stress_max"] = m.sigma_max / sigma_star;
     s["strain_at_peak"] = eps_peak;
-    s["strain_at_failure"] = or_null(m.strain_at_failure);
-    s["failure_width_over_peak_strain"] = or_null((m.strain_at_failure - eps_peak) / eps_peak);
+    s["strain_at_failure"] = finite_or_null(m.strain_at_failure);
+    s["failure_width_over_peak_strain"] = finite_or_null((m.strain_at_failure - eps_peak) / eps_peak);
     s["strain_end"] = r.records.back().strain;
     s["broken_links"] = tissue.model.broken_links();
     s["links"] = links;
     s["broken_fraction"] = static_cast<double>(tissue.model.broken_links()) / links;
     s["broken_links_at_peak"] = r.records[m.peak].broken;
     s["separated"] = !end.bottom_to_top;
-    s["crack_height_over_H"] = or_null(crack_height);
+    s["crack_height_over_H"] = finite_or_null(crack_height);
     s["cell_groups"] = end.groups;
     s["cracks_crossing"] = end.bottom_to_top ? 0 : end.groups - 1;
     s["stress_drops"] = m.drops.size();
     s["largest_stress_drop"] = m.drops.empty() ? 0.0 : *std::max_element(m.drops.begin(), m.drops.end());
-    s["stress_drop_growth"] = or_null(m.growth);
+    s["stress_drop_growth"] = finite_or_null(m.growth);
     const TissueRecord& at_peak = r.records[m.peak];
     s["force_mismatch_at_peak"] = std::abs(at_peak.force_top - at_peak.force_bottom) / at_peak.force_top;
     s["cells"] = tissue.cells.size();
@@ -339,7 +335,14 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
             ParameterSpec::real("dt_factor", 0.25, "1", "time step over dt_c = sqrt(m/k_max)").positive(),
         },
         run_tissue,
-        /*checkpoints=*/true});
+        /*checkpoints=*/true}
+                     .needing([](const Parameters& p) {
+                         // A cell of a planar tiling has 6 edges on average (Euler's formula).
+                         return spd::shell_model_memory(double(p.integer("rows")) *
+                                                            double(p.integer("columns")) * 6.0 *
+                                                            double(p.integer("edge_segments")),
+                                                        "vertices (rows x columns x 6 x edge_segments)");
+                     }));
 }
 
 } // namespace softgrain

@@ -261,6 +261,18 @@ void run_punch_scene(const Parameters& p, RunContext& context)
     out["cost_per_step_per_particle_s"] = wall / (static_cast<double>(r.steps) * r.particles);
 }
 
+// The memory of a VSM body of `particles` particles: 13 kB per particle, measured as the growth of peak RSS
+// between vsm.patch runs of 6^3 and 14^3 particles (Voronoi cells, neighbour lists, the matrices K'_a).
+MemoryEstimate vsm_particle_memory(double particles, const std::string& what)
+{
+    return per_item_memory(particles, 13e3, what);
+}
+
+double cube(double x)
+{
+    return x * x * x;
+}
+
 } // namespace
 
 void register_vsm_scenes(SceneRegistry& registry)
@@ -298,7 +310,11 @@ void register_vsm_scenes(SceneRegistry& registry)
                 .non_negative(),
         },
         run_patch,
-    });
+    }
+                     .needing([](const Parameters& p) {
+                         return vsm_particle_memory(cube(double(p.integer("per_side"))),
+                                                    "particles (per_side^3)");
+                     }));
     registry.add(Scene{
         "vsm.swinging_cube",
         "VSM swinging cube (Frenning Fig. 5): displacement error against the linear solution eq. (53) at t = "
@@ -329,7 +345,11 @@ void register_vsm_scenes(SceneRegistry& registry)
             time_step_check(),
         },
         run_swinging_cube_scene,
-    });
+    }
+                     .needing([](const Parameters& p) {
+                         return vsm_particle_memory(cube(double(p.integer("per_side"))),
+                                                    "particles (per_side^3)");
+                     }));
     registry.add(Scene{
         "vsm.lblock",
         "VSM L-shaped block (Frenning Figs. 6-8): free block, traction pulse, momentum conservation",
@@ -349,7 +369,12 @@ void register_vsm_scenes(SceneRegistry& registry)
             time_step_check(),
         },
         run_l_block_scene,
-    });
+    }
+                     .needing([](const Parameters& p) {
+                         // The L of arms 6 x 3 x 3 m and 3 x 7 x 3 m: 117 m^3.
+                         return vsm_particle_memory(117.0 / cube(p.real("spacing")),
+                                                    "particles (117 m^3 / spacing^3)");
+                     }));
     registry.add(Scene{
         "vsm.punch",
         "VSM punch test (Frenning Figs. 9-10): rigid punch on the middle third, stabilisation xi, pressure "
@@ -385,7 +410,13 @@ void register_vsm_scenes(SceneRegistry& registry)
             time_step_check(),
         },
         run_punch_scene,
-    });
+    }
+                     .needing([](const Parameters& p) {
+                         const double per_side = double(p.integer("per_side"));
+                         return vsm_particle_memory(per_side * (2 * per_side - 1) *
+                                                        double(p.integer("layers")),
+                                                    "particles (per_side x (2 per_side - 1) x layers)");
+                     }));
 }
 
 } // namespace softgrain

@@ -111,16 +111,18 @@ TEST_CASE("a compaction resumed from a checkpoint of its loading or unloading en
         const fs::path file = dir / (loading ? "loading.checkpoint" : "unloading.checkpoint");
         // Interrupt at the first recorded state of the stage after a checkpoint was written in it: the run
         // then resumes from a state inside that stage.
-        Checkpoints writer = checkpoints_at(file, 0.02, false);
-        int saved_at_stage_start = -1;
-        const auto interrupt = [&](const Assembly&, const CompactionState& st) {
-            if (st.loading != loading) return;
-            if (saved_at_stage_start < 0)
-                saved_at_stage_start = writer.saved();
-            else if (writer.saved() > saved_at_stage_start)
-                throw Interrupted{};
-        };
-        CHECK_THROWS_AS(compaction(setup, interrupt, no_progress, &writer), Interrupted);
+        {
+            Checkpoints writer = checkpoints_at(file, 0.02, false);
+            int saved_at_stage_start = -1;
+            const auto interrupt = [&](const Assembly&, const CompactionState& st) {
+                if (st.loading != loading) return;
+                if (saved_at_stage_start < 0)
+                    saved_at_stage_start = writer.saved();
+                else if (writer.saved() > saved_at_stage_start)
+                    throw Interrupted{};
+            };
+            CHECK_THROWS_AS(compaction(setup, interrupt, no_progress, &writer), Interrupted);
+        } // the interrupted run ends here, releasing its checkpoint
         REQUIRE(fs::exists(file));
         Checkpoints reader = checkpoints_at(file, 0, true);
         const CompactionResult resumed = compaction(setup, ignore_state, no_progress, &reader);
@@ -145,16 +147,18 @@ TEST_CASE("a tissue pull resumed from a checkpoint written after links broke end
     const fs::path dir = scratch("tissue");
     const fs::path file = dir / "spd.tissue.checkpoint";
     Tissue interrupted = build_tissue(setup);
-    Checkpoints writer(file, 0.05, false, "spd.tissue", "{}", "test");
-    int saved_with_broken_links = -1;
-    const auto interrupt = [&](double) {
-        if (interrupted.model.broken_links() == 0) return;
-        if (saved_with_broken_links < 0)
-            saved_with_broken_links = writer.saved();
-        else if (writer.saved() > saved_with_broken_links)
-            throw Interrupted{};
-    };
-    CHECK_THROWS_AS(pull(interrupted, pulling, interrupt, &writer), Interrupted);
+    {
+        Checkpoints writer(file, 0.05, false, "spd.tissue", "{}", "test");
+        int saved_with_broken_links = -1;
+        const auto interrupt = [&](double) {
+            if (interrupted.model.broken_links() == 0) return;
+            if (saved_with_broken_links < 0)
+                saved_with_broken_links = writer.saved();
+            else if (writer.saved() > saved_with_broken_links)
+                throw Interrupted{};
+        };
+        CHECK_THROWS_AS(pull(interrupted, pulling, interrupt, &writer), Interrupted);
+    } // the interrupted run ends here, releasing its checkpoint
 
     Tissue resumed_tissue = build_tissue(setup);
     Checkpoints reader(file, 0, true, "spd.tissue", "{}", "test");
