@@ -37,6 +37,12 @@ void run_bench(const Parameters& p, RunContext& ctx)
     const double dt = setup.ring.dt_factor * a.model.critical_time_step();
     a.model.check_time_step(dt);
     const double speed = 0.02 * ring_scales(setup.ring).radius_vertex / dt;
+    // A dt_factor so small that the launch speed 0.02 r/dt overflows (4.9e-324 aborted the run).
+    if (!std::isfinite(speed))
+        throw InputError(
+            "'dt_factor' = " + number_text(setup.ring.dt_factor) + " gives dt = " + number_text(dt) +
+            " s and a launch speed 0.02 r/dt that is not finite; allowed: dt_factor with a finite "
+            "launch speed");
     Rng rng(setup.seed + 1);
     for (int shell : a.particles) {
         const double angle = rng.uniform(0, 2 * std::numbers::pi);

@@ -772,6 +772,9 @@ double ShellModel::stable_time_step() const
 void ShellModel::check_time_step(double dt) const
 {
     const double dt_c = critical_time_step(), limit = stable_time_step();
+    if (!(dt > 0)) // a dt_factor that underflows: every step would leave the state as it is
+        throw InputError("the time step dt = " + number_text(dt) + " s (dt_c = " + number_text(dt_c) +
+                         " s); allowed: dt_factor giving dt > 0");
     if (dt <= limit) return;
     std::ostringstream cause;
     cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
