@@ -121,6 +121,13 @@ void run_boundary_jam(const Parameters& p, RunContext& context)
     const auto finite =
         std::count_if(all_thetas.begin(), all_thetas.end(), [](double t) { return !std::isnan(t); });
     context.summary()["packings_with_4_cycle"] = finite;
+    // The range of theta over every packing with a 4-cycle: touching equal disks bound it to [60, 90] deg
+    // (the short diagonal of the rhombus cannot be shorter than d), up to the overlaps U < 2 U_t allows.
+    double theta_min = std::numeric_limits<double>::infinity(), theta_max = -theta_min;
+    for (double t : all_thetas)
+        if (!std::isnan(t)) theta_min = std::min(theta_min, t), theta_max = std::max(theta_max, t);
+    context.summary()["theta_min"] = finite > 0 ? nlohmann::json(theta_min) : nlohmann::json(nullptr);
+    context.summary()["theta_max"] = finite > 0 ? nlohmann::json(theta_max) : nlohmann::json(nullptr);
 }
 
 std::vector<ParameterSpec> boundary_jam_parameters()

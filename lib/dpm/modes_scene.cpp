@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace softgrain::dpm {
 
@@ -115,6 +116,18 @@ SpectrumCounts write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x,
     const auto started = std::chrono::steady_clock::now();
     const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
     const double spectrum_seconds = seconds_since(started);
+    // The cost chart's exponent (DPM-cost) needs the time of the algorithm, not of the other work on a shared
+    // machine, which only ever adds: the least of at least 3 repeats and 0.2 s of them (at most 20).
+    double spectrum_seconds_min = spectrum_seconds, spent = spectrum_seconds;
+    for (int repeat = 1; repeat < 20 && (repeat < 3 || spent < 0.2); ++repeat) {
+        const auto again = std::chrono::steady_clock::now();
+        const ModeSpectrum repeated = vibrational_modes(system, x);
+        const double seconds = seconds_since(again);
+        if (repeated.eigenvalues.size() != modes.eigenvalues.size())
+            throw std::logic_error("write_spectrum: a repeated spectrum changed size");
+        spectrum_seconds_min = std::min(spectrum_seconds_min, seconds);
+        spent += seconds;
+    }
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
     const double threshold = zero_mode_threshold(lambda, zero_threshold);
     const SpectrumCounts counts = count_modes(lambda, threshold);
@@ -165,7 +178,8 @@ SpectrumCounts write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x,
     s["negative_modes"] = counts.negative;
     s["zero_threshold_used"] = threshold;
     s["degrees_of_freedom"] = x.size();
-    s["spectrum_seconds"] = spectrum_seconds; // cost chart (dpm-cost), reported, never asserted
+    s["spectrum_seconds"] = spectrum_seconds;         // cost chart (dpm-cost), reported, never asserted
+    s["spectrum_seconds_min"] = spectrum_seconds_min; // least of the repeats: the exponent claim of DPM-cost
     s["lambda_smallest_nonzero"] =
         positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
     s["lambda_largest_zero"] =

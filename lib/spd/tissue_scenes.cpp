@@ -170,6 +170,41 @@ double write_yield_curve(RunContext& ctx, const CohesiveLaw& law)
     return zeta_max;
 }
 
+// Fig. 31: one link of the built tissue, loaded through the model's own force evaluation
+// (ShellModel::compute_forces, which tests eq. (39) and breaks the link): both vertices of its cell-j side
+// (b and b' for an opening, b alone for a slip) are first moved by `approach` along -n (closing, f_n > 0),
+// then step by step by `increment` along `direction` (n: opening, t: slip) until the link breaks. Returns the
+// link's f_n, f_t at the break and the distance moved in `direction` (NaN if it never broke in 20000 steps or
+// the model stopped with a numerical failure).
+struct LinkBreak
+{
+    double f_n = NAN, f_t = NAN, moved = NAN;
+};
+LinkBreak break_one_link(ShellModel model, std::size_t index, double approach, bool opening, double increment,
+                         double dt)
+{
+    // Opening moves b and b' (the frame stays); a slip of f_t^0/k_t ~ 0.4 m would carry b' past the end of
+    // the interface into the next cell, so a slip moves b alone, along t into the interface (m moves along
+    // t: the frame stays; the approach turns it by approach/(2 |m' - m|) ~ 1e-2, which the measured f_n, f_t
+    // at the break include).
+    const CohesiveLink link = model.links()[index];
+    const LinkKinematics k = link_kinematics(link, model.vertex(link.a), model.vertex(link.b),
+                                             model.vertex(link.partner_a), model.vertex(link.partner_b));
+    const Vec2 direction = opening ? k.n : k.t;
+    const Vec2 b = model.vertex(link.b) - approach * k.n, pb = model.vertex(link.partner_b);
+    try {
+        for (int step = 0; step <= 20000; ++step) {
+            model.set_vertex(link.b, b + step * increment * direction);
+            if (opening) model.set_vertex(link.partner_b, pb + step * increment * direction);
+            model.compute_forces(dt);
+            const CohesiveLink& now = model.links()[index];
+            if (now.broken) return {now.f_n, now.f_t, step * increment};
+        }
+    } catch (const NumericalError&) { // e.g. the contact law refusing the overlap: reported as no break (NaN)
+    }
+    return {};
+}
+
 void run_tissue(const Parameters& p, RunContext& ctx)
 {
     TissueSetup setup;
@@ -206,6 +241,16 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     const double sigma_star = sc.F_star / (2 * R * s_depth); // eq. (37)
 
     write_links(ctx, tissue, R);
+    // Fig. 31: the measured forces at which one link breaks in pure opening (mode I) and in shear under the
+    // compression f_n = |f_n^0|/2 (the contact law, which acts between linked cells too, holds an overlap of
+    // |f_n^0|/(2 k_n) = 0.48 (r_i + r_j) at the default cohesion; |f_n^0|/k_n would exceed its 0.95 (r_i +
+    // r_j)), against eq. (39); increments of 7e-4 of the threshold per step.
+    const CohesiveLaw& law0 = tissue.model.link_law();
+    const double dt_probe = pulling.dt_factor * tissue.model.critical_time_step();
+    const LinkBreak mode_one =
+        break_one_link(tissue.model, 0, 0.0, true, 7e-4 * std::abs(law0.f_n0) / law0.k_n, dt_probe);
+    const LinkBreak shear = break_one_link(tissue.model, 0, 0.5 * std::abs(law0.f_n0) / law0.k_n, false,
+                                           7e-4 * law0.f_t0 / law0.k_t, dt_probe);
 
     auto progress = ctx.progress("spd.tissue");
     const PullResult r = pull(
@@ -241,8 +286,16 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     const int links = static_cast<int>(tissue.model.links().size());
     auto& s = ctx.summary();
     s["yield_curve_zeta_max"] = zeta_max;
-    // Closed form of the compression branch: zeta(|f_n^0|, f_t^0 sqrt(2)) = 0 (breaking by shear only).
-    s["yield_zeta_at_shear_break"] = yield_function(std::abs(law.f_n0), law.f_t0 * std::sqrt(2.0), law);
+    // Fig. 31, one link broken through the model: f_n at a pure-opening break over f_n^0 (eq. (39): 1), and
+    // |f_t| at a shear break in compression over eq. (39)'s threshold f_t^0 sqrt(1 + f_n/|f_n^0|) (1), with
+    // the displacements that broke them over those of the law (f_n^0/k_n, sqrt(1.5) f_t^0/k_t).
+    s["mode_one_break_fn_over_fn0"] = or_null(mode_one.f_n / law.f_n0);
+    s["mode_one_break_ft_over_ft0"] = or_null(mode_one.f_t / law.f_t0);
+    s["mode_one_break_opening_over_law"] = or_null(mode_one.moved * law.k_n / std::abs(law.f_n0));
+    s["shear_break_fn_over_abs_fn0"] = or_null(shear.f_n / std::abs(law.f_n0));
+    s["shear_break_ft_over_threshold"] =
+        or_null(std::abs(shear.f_t) / (law.f_t0 * std::sqrt(1 + shear.f_n / std::abs(law.f_n0))));
+    s["shear_break_slip_over_law"] = or_null(shear.moved * law.k_t / (std::sqrt(1.5) * law.f_t0));
     s["stress_max"] = m.sigma_max / sigma_star;
     s["strain_at_peak"] = eps_peak;
     s["strain_at_failure"] = finite_or_null(m.strain_at_failure);

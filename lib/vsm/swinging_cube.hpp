@@ -21,9 +21,10 @@ struct SwingingCube
     double length = 1.0;                     // L [m]
     Vec3 amplitude{5.0e-4, 5.0e-4, -1.0e-3}; // U1, U2, U3 [m]
     Material material{17.0e6, 0.45, 1.1e3};
-    double wave_number() const;                       // k = pi / (2 L) [1/m]
-    double angular_frequency() const;                 // omega = sqrt(3) k c_s [rad/s]
-    Vec3 displacement(const Vec3& X, double t) const; // eq. (53) [m]
+    double wave_number() const;                                // k = pi / (2 L) [1/m]
+    double angular_frequency() const;                          // omega = sqrt(3) k c_s [rad/s]
+    Vec3 displacement(const Vec3& X, double t) const;          // eq. (53) [m]
+    Mat3 displacement_gradient(const Vec3& X, double t) const; // d u_i / d X_j of eq. (53) [1]
 };
 
 struct SwingingCubeSetup
@@ -59,6 +60,9 @@ struct SwingingCubeResult
     double spacing = 0;                    // mean particle spacing L / per_side [m]
     Points<3> X;                           // reference positions
     std::vector<double> initial_von_mises; // von Mises stress of each particle at t = 0 [Pa] (Fig. 4)
+    // sqrt(sum_a (vm_a - vm(X_a))^2 / sum_a vm(X_a)^2): the particles' initial von Mises stress against that
+    // of the exact F = I + grad u of eq. (53) at their reference positions, both by eq. (48).
+    double initial_von_mises_error_l2 = 0;
     double dt = 0;
     double dt_limit = 0; // predicted stability limit (vsm/stability.hpp) [s]
     long steps = 0;
