@@ -58,6 +58,25 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
             log_g.push_back(std::log(mean_g[l]));
         }
     }
+    std::vector<double> slopes;
+    for (const ModulusMember& m : members) {
+        std::vector<double> lp, lg;
+        for (std::size_t l = 1; l < levels; ++l)
+            if (m.modulus[l] > 0) lp.push_back(std::log(m.pressure[l])), lg.push_back(std::log(m.modulus[l]));
+        if (lp.size() < 2) continue;
+        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
+        gsl_fit_linear(lp.data(), 1, lg.data(), 1, lp.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
+        slopes.push_back(c1);
+    }
+    out.packings_with_slope = static_cast<int>(slopes.size());
+    if (slopes.size() >= 2) {
+        double mean_slope = 0, var = 0;
+        for (double v : slopes)
+            mean_slope += v / static_cast<double>(slopes.size());
+        for (double v : slopes)
+            var += (v - mean_slope) * (v - mean_slope) / static_cast<double>(slopes.size() - 1);
+        out.eta_spread = std::sqrt(var);
+    }
     out.G_onset = mean_g.front();
     out.G_max_pressure = mean_g.back();
     if (log_p.size() >= 2) {
@@ -77,6 +96,9 @@ void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, 
     s["shear_modulus_exponent_error" + suffix] =
         e.eta_error ? nlohmann::json(*e.eta_error) : nlohmann::json(nullptr);
     s["force_max" + suffix] = e.force_max;
+    s["shear_modulus_exponent_spread" + suffix] =
+        e.eta_spread ? nlohmann::json(*e.eta_spread) : nlohmann::json(nullptr);
+    s["packings_with_slope" + suffix] = e.packings_with_slope;
 }
 
 } // namespace softgrain::dpm

@@ -56,6 +56,11 @@ struct EnsembleModulus
 {
     double G_onset = 0, G_max_pressure = 0; // <G> at P_t and at the largest pressure
     std::optional<double> eta, eta_error;   // slope of ln<G> against ln<P> and its standard error
+    // The same slope fitted to each packing's own G(P) above onset (where G > 0 at >= 2 pressures): their
+    // sample standard deviation over the packings (>= 2 of them) and how many had a slope. The ensemble's
+    // exponent is known to about spread / sqrt(packings) (the size a claim on eta needs).
+    std::optional<double> eta_spread;
+    int packings_with_slope = 0;
     long fire_iterations = 0;
     double force_max = 0;
 };
