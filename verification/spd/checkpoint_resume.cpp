@@ -84,6 +84,26 @@ struct Interrupted
 {
 };
 
+// Stops a run (throws Interrupted) at its first record after the writer saved a checkpoint within the part
+// of the run where `inside` holds, so that the resumed run starts from a state inside that part.
+class InterruptAfterNextSave
+{
+  public:
+    explicit InterruptAfterNextSave(const Checkpoints& writer) : writer_(writer) {}
+    void operator()(bool inside)
+    {
+        if (!inside) return;
+        if (saved_on_entry_ < 0)
+            saved_on_entry_ = writer_.saved();
+        else if (writer_.saved() > saved_on_entry_)
+            throw Interrupted{};
+    }
+
+  private:
+    const Checkpoints& writer_;
+    int saved_on_entry_ = -1;
+};
+
 Checkpoints checkpoints_at(const fs::path& file, double interval, bool resume)
 {
     return Checkpoints(file, interval, resume, "spd.compaction", "{}", "test");
@@ -113,13 +133,9 @@ TEST_CASE("a compaction resumed from a checkpoint of its loading or unloading en
         // then resumes from a state inside that stage.
         {
             Checkpoints writer = checkpoints_at(file, 0.02, false);
-            int saved_at_stage_start = -1;
+            InterruptAfterNextSave stop(writer);
             const auto interrupt = [&](const Assembly&, const CompactionState& st) {
-                if (st.loading != loading) return;
-                if (saved_at_stage_start < 0)
-                    saved_at_stage_start = writer.saved();
-                else if (writer.saved() > saved_at_stage_start)
-                    throw Interrupted{};
+                stop(st.loading == loading);
             };
             CHECK_THROWS_AS(compaction(setup, interrupt, no_progress, &writer), Interrupted);
         } // the interrupted run ends here, releasing its checkpoint
@@ -149,14 +165,8 @@ TEST_CASE("a tissue pull resumed from a checkpoint written after links broke end
     Tissue interrupted = build_tissue(setup);
     {
         Checkpoints writer(file, 0.05, false, "spd.tissue", "{}", "test");
-        int saved_with_broken_links = -1;
-        const auto interrupt = [&](double) {
-            if (interrupted.model.broken_links() == 0) return;
-            if (saved_with_broken_links < 0)
-                saved_with_broken_links = writer.saved();
-            else if (writer.saved() > saved_with_broken_links)
-                throw Interrupted{};
-        };
+        InterruptAfterNextSave stop(writer);
+        const auto interrupt = [&](double) { stop(interrupted.model.broken_links() > 0); };
         CHECK_THROWS_AS(pull(interrupted, pulling, interrupt, &writer), Interrupted);
     } // the interrupted run ends here, releasing its checkpoint
 
