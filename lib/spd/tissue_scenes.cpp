@@ -289,13 +289,14 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     // Fig. 31, one link broken through the model: f_n at a pure-opening break over f_n^0 (eq. (39): 1), and
     // |f_t| at a shear break in compression over eq. (39)'s threshold f_t^0 sqrt(1 + f_n/|f_n^0|) (1), with
     // the displacements that broke them over those of the law (f_n^0/k_n, sqrt(1.5) f_t^0/k_t).
-    s["mode_one_break_fn_over_fn0"] = finite_or_null(mode_one.f_n / law.f_n0);
-    s["mode_one_break_ft_over_ft0"] = finite_or_null(mode_one.f_t / law.f_t0);
-    s["mode_one_break_opening_over_law"] = finite_or_null(mode_one.moved * law.k_n / std::abs(law.f_n0));
-    s["shear_break_fn_over_abs_fn0"] = finite_or_null(shear.f_n / std::abs(law.f_n0));
+    // A probe that never broke its link is a failed measurement: NaN, written "nan" (not null).
+    s["mode_one_break_fn_over_fn0"] = mode_one.f_n / law.f_n0;
+    s["mode_one_break_ft_over_ft0"] = mode_one.f_t / law.f_t0;
+    s["mode_one_break_opening_over_law"] = mode_one.moved * law.k_n / std::abs(law.f_n0);
+    s["shear_break_fn_over_abs_fn0"] = shear.f_n / std::abs(law.f_n0);
     s["shear_break_ft_over_threshold"] =
-        finite_or_null(std::abs(shear.f_t) / (law.f_t0 * std::sqrt(1 + shear.f_n / std::abs(law.f_n0))));
-    s["shear_break_slip_over_law"] = finite_or_null(shear.moved * law.k_t / (std::sqrt(1.5) * law.f_t0));
+        std::abs(shear.f_t) / (law.f_t0 * std::sqrt(1 + shear.f_n / std::abs(law.f_n0)));
+    s["shear_break_slip_over_law"] = shear.moved * law.k_t / (std::sqrt(1.5) * law.f_t0);
     s["stress_max"] = m.sigma_max / sigma_star;
     s["strain_at_peak"] = eps_peak;
     s["strain_at_failure"] = finite_or_null(m.strain_at_failure);
