@@ -1,6 +1,7 @@
 #include "core/checkpoint.hpp"
 
 #include "core/errors.hpp"
+#include "core/leftovers.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -89,17 +91,9 @@ Checkpoints::Checkpoints(fs::path file, double interval_seconds, bool resume, st
       version_(std::move(version)), last_(std::chrono::steady_clock::now())
 {
     fs::create_directories(file_.parent_path());
-    lock_descriptor_ = ::open(lock_file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock_descriptor_ < 0)
-        throw IoError("cannot create the checkpoint lock " + lock_file_.string() + ": " +
-                      std::strerror(errno));
-    const std::string allowed = "; allowed: another --out, or waiting for that run to end";
-    if (::flock(lock_descriptor_, LOCK_EX | LOCK_NB) != 0) {
-        ::close(lock_descriptor_);
-        lock_descriptor_ = -1; // the lock file is the other run's: leave it
+    if (!acquire_lock())
         throw InputError("the checkpoint " + file_.string() + " belongs to another run that is still going" +
-                         allowed);
-    }
+                         "; allowed: another --out, or waiting for that run to end");
     if (!resume_ && fs::exists(file_)) {
         release_lock();
         throw InputError("the checkpoint " + file_.string() +
@@ -113,10 +107,39 @@ Checkpoints::~Checkpoints()
     release_lock();
 }
 
+// flock on DIR/<name>.checkpoint.lock. A run that releases the lock unlinks the file first, so a run that
+// opened the old file just before may still win the lock on it, while a third run creates a new file under
+// the name and locks that: two holders. The lock therefore counts only if the name still refers to the file
+// that was locked (same device and inode); otherwise it is taken again on the new file.
+bool Checkpoints::acquire_lock()
+{
+    for (;;) {
+        const int descriptor = ::open(lock_file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (descriptor < 0)
+            throw IoError("cannot create the checkpoint lock " + lock_file_.string() + ": " +
+                          std::strerror(errno));
+        if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0) {
+            ::close(descriptor); // the lock file is the other run's: leave it
+            return false;
+        }
+        struct stat held
+        {
+        }, named{};
+        if (::fstat(descriptor, &held) == 0 && ::stat(lock_file_.c_str(), &named) == 0 &&
+            held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
+            lock_descriptor_ = descriptor;
+            remove_on_signal(lock_file_);
+            return true;
+        }
+        ::close(descriptor);
+    }
+}
+
 // The lock file goes first, then the lock: a run that opens the name afterwards creates a new file.
 void Checkpoints::release_lock()
 {
     if (lock_descriptor_ < 0) return;
+    keep_on_signal(lock_file_);
     ::unlink(lock_file_.c_str());
     ::close(lock_descriptor_);
     lock_descriptor_ = -1;
@@ -134,6 +157,7 @@ void Checkpoints::save(const std::function<void(Archive&)>& state)
     const auto refuse = [&](const std::string& what) {
         std::error_code ignored;
         fs::remove(temporary, ignored); // a half-written checkpoint is never left behind
+        keep_on_signal(temporary);
         throw IoError(what + " " + temporary.string() + ": " + std::strerror(errno));
     };
     std::ostringstream content(std::ios::binary);
@@ -148,6 +172,7 @@ void Checkpoints::save(const std::function<void(Archive&)>& state)
     archive(end);
     const std::string bytes = content.str();
     const std::uint32_t checksum = crc32_of(bytes);
+    remove_on_signal(temporary);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out) refuse("cannot write the checkpoint");
@@ -157,6 +182,7 @@ void Checkpoints::save(const std::function<void(Archive&)>& state)
         if (out.fail()) refuse("writing failed (disk full?): the checkpoint");
     }
     fs::rename(temporary, file_);
+    keep_on_signal(temporary);
     last_ = std::chrono::steady_clock::now();
     ++saved_;
 }

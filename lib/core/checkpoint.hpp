@@ -166,6 +166,7 @@ class Checkpoints
     bool resumed() const { return resumed_; }
 
   private:
+    bool acquire_lock(); // false: another live run holds the lock
     void release_lock();
 
     std::filesystem::path file_;

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/gsl_checked.hpp"
+#include "core/leftovers.hpp"
 #include "core/output.hpp"
 
 #include <cmath>
@@ -161,9 +162,10 @@ int run_scene(const std::string& target, const std::vector<std::string>& assignm
     return exit_success;
 }
 
-// A run stopped by SIGINT, SIGTERM or SIGHUP removes its partial directory before it exits with 128 +
-// the signal's number. The signals are blocked in every thread (OpenMP's threads inherit the mask) and
-// taken by one watcher thread with sigwait, where removing a directory is safe, as it is not in a handler.
+// A run stopped by SIGINT, SIGTERM or SIGHUP removes its partial directory and its checkpoint lock before it
+// exits with 128 + the signal's number. The signals are blocked in every thread (OpenMP's threads inherit the
+// mask) and taken by one watcher thread with sigwait, where removing a directory is safe, as it is not in a
+// handler.
 void remove_partial_output_on_signal()
 {
     static sigset_t stopping;
@@ -174,7 +176,7 @@ void remove_partial_output_on_signal()
     std::thread([] {
         int signal = 0;
         sigwait(&stopping, &signal);
-        remove_partial_directory_in_progress();
+        remove_leftovers_of_run_in_progress();
         std::_Exit(128 + signal);
     }).detach();
 }

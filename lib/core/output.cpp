@@ -1,6 +1,7 @@
 #include "core/output.hpp"
 
 #include "core/errors.hpp"
+#include "core/leftovers.hpp"
 
 #include <signal.h>
 #include <sys/resource.h>
@@ -12,7 +13,6 @@
 #include <cstring>
 #include <iomanip>
 #include <iostream>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -76,16 +76,6 @@ std::string format_duration(double seconds)
     else
         out << s << "s";
     return out.str();
-}
-
-// The partial directory of the run in progress, for remove_partial_directory_in_progress (a signal).
-std::mutex in_progress_mutex;
-fs::path in_progress;
-
-void set_in_progress(const fs::path& partial)
-{
-    const std::lock_guard lock(in_progress_mutex);
-    in_progress = partial;
 }
 
 // Partial or set-aside directories of runs into `out_dir` whose process is gone (killed with SIGKILL, or a
@@ -217,7 +207,7 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
     remove_stale_partial_directories(out_dir);
     fs::remove_all(partial_dir_); // a leftover of an earlier process with this pid
     fs::create_directories(partial_dir_);
-    set_in_progress(partial_dir_);
+    remove_on_signal(partial_dir_);
     std::ostringstream preamble;
     preamble << "# generator: softgrain " << software_version() << "\n"
              << "# scene: " << scene_name_ << "\n"
@@ -225,16 +215,9 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
     preamble_ = preamble.str();
 }
 
-void remove_partial_directory_in_progress()
-{
-    const std::lock_guard lock(in_progress_mutex);
-    std::error_code ignored;
-    if (!in_progress.empty()) fs::remove_all(in_progress, ignored);
-}
-
 RunContext::~RunContext()
 {
-    set_in_progress({});
+    keep_on_signal(partial_dir_);
     if (committed_) return;
     std::error_code ignored;
     tables_.clear();

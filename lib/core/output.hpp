@@ -75,11 +75,6 @@ class Progress
     bool printed_ = false;
 };
 
-// Removes the partial directory of the run in progress, if any: for a run stopped by a signal
-// (SIGINT, SIGTERM, SIGHUP), from the command line's signal watcher. Partial directories of runs killed
-// otherwise (SIGKILL) are removed by the next run into the same output directory.
-void remove_partial_directory_in_progress();
-
 class RunContext
 {
   public:

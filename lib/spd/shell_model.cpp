@@ -151,18 +151,27 @@ void ShellModel::core_forces(int index)
         p += core_p_[index];
     }
     if (p == 0.0) return;
-    f_.segment(2 * s.first, 2 * s.count) +=
-        s.depth * p * area_gradient(s, x_.segment(2 * s.first, 2 * s.count));
+    // Added vertex by vertex, without a temporary: this runs inside the parallel force region, which no
+    // exception (not even bad_alloc) may leave.
+    const double scale = s.depth * p;
+    const double* xs = x_.data() + 2 * s.first;
+    for (int k = 0; k < s.count; ++k)
+        add_force(s.first + k, scale * vertex_area_gradient(xs, s.count, k));
+}
+
+// dA/dx_k of a polygon's signed area (xs: its vertices, x and y interleaved): half its chord from the
+// previous to the next vertex, turned by -90 degrees.
+Vec2 ShellModel::vertex_area_gradient(const double* xs, int count, int k)
+{
+    const int a = (k + count - 1) % count, b = (k + 1) % count;
+    return {0.5 * (xs[2 * b + 1] - xs[2 * a + 1]), -0.5 * (xs[2 * b] - xs[2 * a])};
 }
 
 Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const
 {
     Eigen::VectorXd g(2 * s.count);
-    for (int k = 0; k < s.count; ++k) {
-        const int a = (k + s.count - 1) % s.count, b = (k + 1) % s.count;
-        g[2 * k] = 0.5 * (xs[2 * b + 1] - xs[2 * a + 1]);
-        g[2 * k + 1] = -0.5 * (xs[2 * b] - xs[2 * a]);
-    }
+    for (int k = 0; k < s.count; ++k)
+        g.segment<2>(2 * k) = vertex_area_gradient(xs.data(), s.count, k);
     return g;
 }
 

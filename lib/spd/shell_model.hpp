@@ -218,6 +218,7 @@ class ShellModel
     void throw_step_too_long(double dt) const;
     // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
     // are xs (2 count entries): outward for a CCW polygon [m].
+    static Vec2 vertex_area_gradient(const double* xs, int count, int k);
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
     void update_contact_candidates();
     int shell_of(int vertex) const { return shell_of_[vertex]; }

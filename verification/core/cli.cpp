@@ -235,7 +235,8 @@ TEST_CASE("a run that cannot take the steps it is asked for is refused (exit 2),
     fs::remove_all(dir);
 }
 
-TEST_CASE("a run stopped by SIGTERM or SIGHUP removes its partial directory; a later run removes stale ones")
+TEST_CASE("a run stopped by SIGTERM or SIGHUP removes its partial directory and its checkpoint lock; a later "
+          "run removes stale partial directories")
 {
     const fs::path dir = scratch_directory("signal");
     // periods = 1e6: 6e8 steps, far longer than the half second before the signal. (SIGINT takes the same
@@ -249,6 +250,15 @@ TEST_CASE("a run stopped by SIGTERM or SIGHUP removes its partial directory; a l
             contains(stopped.output, std::string("exit=") + (std::string(signal) == "TERM" ? "143" : "129")));
         CHECK(fs::is_empty(dir));
     }
+    // A run that keeps checkpoints also leaves no lock file (nor a half-written checkpoint); the checkpoint
+    // itself stays, for --resume.
+    const Outcome checkpointing = softgrain::verification::run_shell(
+        std::string(SOFTGRAIN_EXECUTABLE) + " run spd.compaction --quiet --checkpoint-every 0.1 --out " +
+        dir.string() + " & p=$!; sleep 1.5; kill -TERM $p; wait $p; echo exit=$?");
+    CHECK(contains(checkpointing.output, "exit=143"));
+    for (const auto& entry : fs::directory_iterator(dir))
+        CHECK(entry.path().filename() == "spd.compaction.checkpoint");
+    fs::remove(dir / "spd.compaction.checkpoint");
     // A partial directory whose process is gone (a SIGKILL): removed by the next run into the same place.
     fs::create_directories(dir / ".core.harmonic.partial-2147483000");
     REQUIRE(run_softgrain("run core.harmonic --quiet --out " + dir.string()).exit_code == 0);
