@@ -116,6 +116,20 @@ double fitted_slope(const std::vector<double>& x, const std::vector<double>& y)
     return c1;
 }
 
+// The largest change of the least-squares slope over the abscissae x when each ordinate moves by at most
+// delta: delta sum|x - mean| / sum (x - mean)^2, reached with every error of the sign of x - mean.
+double slope_error_bound(const std::vector<double>& x, double delta)
+{
+    if (x.size() < 2) return NAN;
+    const double mean = std::accumulate(x.begin(), x.end(), 0.0) / double(x.size());
+    double spread = 0, variance = 0;
+    for (const double xi : x) {
+        spread += std::abs(xi - mean);
+        variance += (xi - mean) * (xi - mean);
+    }
+    return delta * spread / variance;
+}
+
 // The loading state whose strain is nearest eps.
 const CompressionState& loading_state_nearest(const std::vector<CompressionState>& states, double eps)
 {
@@ -266,6 +280,10 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     if (unload) write_shape(-1.0, 0.0, r.released_x, r.released_y);
     auto& s = ctx.summary();
     s["contact_length_slope"] = finite_or_null(fitted_slope(eps_late, lc_late));
+    // The symmetric contact gains one vertex at each edge at a time: N' l0 - 2c stays within +-l0 of a
+    // constant offset, which bounds the slope's departure from the elastica's.
+    s["contact_length_slope_quantisation"] =
+        finite_or_null(slope_error_bound(eps_late, l / (2 * setup.radius)));
     s["volume_deviation_max"] = volume_deviation;
     s["force_contact_slope"] = finite_or_null(fitted_slope(lc_over_l, f_ratio));
     s["shape_residual_after_unload"] = unload ? nlohmann::json(r.shape_residual) : nlohmann::json(nullptr);
