@@ -57,6 +57,7 @@ void run_ring(const Parameters& p, RunContext& ctx)
          {"volume_error", "1", "|V/V0 - elastica|"},
          {"contact_length_error", "1", "|L_c - 2c|/b0"}});
     RingErrors worst;
+    bool observed = false; // a state at eps = 0.1, 0.2, ... (none when strain_max < 0.1)
     auto& s = ctx.summary();
     for (const RingObservation& o : r.states) {
         if (o.strain <= 0) continue;
@@ -66,6 +67,7 @@ void run_ring(const Parameters& p, RunContext& ctx)
                    el.contact_length, e.force, e.width, e.volume, e.contact_length});
         const double tenths = 10 * o.strain;
         if (std::abs(tenths - std::round(tenths)) > 1e-6) continue; // the observables at eps = 0.1, 0.2, ...
+        observed = true;
         worst = {std::max(worst.force, e.force), std::max(worst.width, e.width),
                  std::max(worst.volume, e.volume), std::max(worst.contact_length, e.contact_length)};
         const std::string key = strain_key(o.strain);
@@ -82,10 +84,13 @@ void run_ring(const Parameters& p, RunContext& ctx)
     s["elastica_force_slope_first_step"] =
         spd::elastica_ring_between_plates(first.strain).force / first.strain;
     s["linear_theory_force_slope"] = 2 / (std::numbers::pi / 4 - 2 / std::numbers::pi);
-    s["force_error_max"] = worst.force;
-    s["width_error_max"] = worst.width;
-    s["volume_error_max"] = worst.volume;
-    s["contact_length_error_max"] = worst.contact_length;
+    const auto if_observed = [observed](double v) {
+        return observed ? nlohmann::json(v) : nlohmann::json(nullptr);
+    };
+    s["force_error_max"] = if_observed(worst.force);
+    s["width_error_max"] = if_observed(worst.width);
+    s["volume_error_max"] = if_observed(worst.volume);
+    s["contact_length_error_max"] = if_observed(worst.contact_length);
     s["method_index"] = setup.method == RingMethod::spd ? 0 : 1;
     s["strain_reached"] = r.states.back().strain;
     s["bending_rigidity"] = r.bending_rigidity;

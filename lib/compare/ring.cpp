@@ -134,11 +134,14 @@ RingComparison compress_ring(const RingComparisonSetup& setup, const std::functi
     if (setup.nodes % 4 != 0)
         throw InputError("nodes = " + std::to_string(setup.nodes) +
                          ": allowed a multiple of 4 (a vertex on each plate at eps = 0)");
-    const double ratio = 0.1 / setup.strain_step;
-    if (std::abs(ratio - std::round(ratio)) > 1e-9)
+    const auto whole = [](double ratio) { return ratio > 0.5 && std::abs(ratio - std::round(ratio)) < 1e-9; };
+    if (!whole(0.1 / setup.strain_step))
         throw InputError(
             "strain_step = " + std::to_string(setup.strain_step) +
             ": allowed 0.1/k for an integer k (the observables are reported at eps = 0.1, 0.2, ...)");
+    if (!whole(setup.strain_max / setup.strain_step))
+        throw InputError("strain_max = " + std::to_string(setup.strain_max) +
+                         ": allowed a whole multiple of strain_step = " + std::to_string(setup.strain_step));
     return setup.method == RingMethod::spd ? compress_spd(setup, progress) : compress_dpm(setup, progress);
 }
 
