@@ -8,6 +8,7 @@ set xrange [STATS_min / 1.5 : STATS_max * 1.5]
 set xlabel "vertices N"
 set ylabel "dt / dt_c"
 set logscale x
+set xtics ("8" 8, "16" 16, "32" 32, "64" 64, "128" 128, "256" 256, "512" 512)
 set key bottom right
 set yrange [0:1.3]
 plot datafile using (column("exit_code") == 0 ? column("nodes") : NaN):"dt_factor" ls 3 pt 7 ps 1.5 with points title "completed (exit 0)", \
