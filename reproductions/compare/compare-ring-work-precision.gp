@@ -1,5 +1,6 @@
 # compare-ring-work-precision: largest relative error of F against the elastica (eps = 0.1 ... 0.6) against the
-# wall time of the run, one curve per method and time step, points labelled by N.
+# wall time of the run, one curve per method and time step (the manifest's sweeps keep each curve's rows together),
+# points labelled by N.
 set xlabel "wall time per run [s]"
 set ylabel "max_{/Symbol e} |F/F_{elastica} - 1|"
 set logscale xy
