@@ -1,4 +1,5 @@
 // The catalogue of every scene softgrain knows: each method registers its own.
+#include "compare/compare_scenes.hpp"
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"
@@ -16,6 +17,7 @@ SceneRegistry all_scenes()
     register_dpm_scenes(registry);
     register_vsm_scenes(registry);
     register_sd_scenes(registry);
+    register_compare_scenes(registry);
     return registry;
 }
 

@@ -45,9 +45,19 @@ struct BetweenPlates
 
 } // namespace
 
+std::vector<double> PlateSchedule::deltas() const
+{
+    if (!compressions.empty()) return compressions;
+    std::vector<double> out;
+    for (int s = 0; s < steps; ++s)
+        out.push_back(delta_min * std::pow(delta_max / delta_min, double(s) / (steps - 1)));
+    return out;
+}
+
 template <int Dim>
 CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& body, double sigma,
-                                          double lambda_max, const PlateSchedule& o)
+                                          double lambda_max, const PlateSchedule& o,
+                                          const PlateObserver& observe)
 {
     const auto heights = x.reshaped(Dim, x.size() / Dim).row(Dim - 1);
     const double lift = 0.5 * sigma - heights.minCoeff();
@@ -60,9 +70,11 @@ CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& b
     fire.dt_max = 0.5 / std::sqrt(std::max(o.kp, lambda_max));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = o.force_tolerance;
+    fire.kinetic_tolerance = o.kinetic_tolerance;
     fire.max_iterations = 5'000'000;
-    for (int s = 0; s < o.steps; ++s) {
-        const double delta = o.delta_min * std::pow(o.delta_max / o.delta_min, double(s) / (o.steps - 1));
+    const std::vector<double> deltas = o.deltas();
+    for (int s = 0; s < static_cast<int>(deltas.size()); ++s) {
+        const double delta = deltas[s];
         const BetweenPlates<Dim> plates{body, o.kp, 0.5 * sigma, h0 - delta * out.diameter};
         const FireResult r = fire_minimise(
             x,
@@ -81,14 +93,15 @@ CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& b
         int contacts = 0;
         plates.energy(x, nullptr, &force, &contacts);
         out.samples.push_back({delta, force, r.iterations, contacts});
+        if (observe) observe(x, plates.top, out.samples.back());
     }
     return out;
 }
 
 template CompressionResult compress_between_plates<2>(Eigen::VectorXd, const BodyEnergy&, double, double,
-                                                      const PlateSchedule&);
+                                                      const PlateSchedule&, const PlateObserver&);
 template CompressionResult compress_between_plates<3>(Eigen::VectorXd, const BodyEnergy&, double, double,
-                                                      const PlateSchedule&);
+                                                      const PlateSchedule&, const PlateObserver&);
 
 CompressionResult compress_shell(const CompressionOptions& o)
 {

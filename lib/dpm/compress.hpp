@@ -31,14 +31,18 @@ struct PlateEnergy
     }
 };
 
-// The compression schedule: delta/D log-spaced from delta_min to delta_max in `steps` steps, FIRE to an rms
-// force per degree of freedom below force_tolerance after each.
+// The compression schedule: delta/D log-spaced from delta_min to delta_max in `steps` steps, or the given
+// `compressions` delta/D when there are any, FIRE to an rms force per degree of freedom below
+// force_tolerance and a kinetic energy per degree of freedom below kinetic_tolerance after each.
 struct PlateSchedule
 {
     double kp = 4.0; // k_p / k_c
     double delta_min = 1e-4, delta_max = 0.2;
     int steps = 30;
-    double force_tolerance = 1e-12; // [k_c sigma]
+    double force_tolerance = 1e-12;     // [k_c sigma]
+    double kinetic_tolerance = 1e-20;   // [k_c sigma^2]
+    std::vector<double> compressions{}; // delta/D in order; empty: the log-spaced ones
+    std::vector<double> deltas() const; // the delta/D of each step
 };
 
 struct CompressionOptions
@@ -78,15 +82,18 @@ struct CompressionResult
 
 // Energy of a body alone, adding its gradient when asked (FIRE needs no Hessian).
 using BodyEnergy = std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*)>;
+// Called after each relaxed step with the body's coordinates, the top plate's height and the sample.
+using PlateObserver = std::function<void(const Eigen::VectorXd&, double, const CompressionSample&)>;
 
 // The protocol for a body of points of diameter sigma in Dim = 2 or 3 dimensions (coordinates x, point p at
 // x(Dim p) ...): the body is lifted to rest on the bottom plate (lowest point at sigma/2), the top plate
 // starts touching its highest point, D = initial height + sigma. FIRE with dt_max = 0.5/sqrt(lambda_max)
 // (lambda_max: an upper bound of the body's stiffest mode, unit masses; the plate spring k_p is included).
-// NumericalError when FIRE does not converge.
+// NumericalError when FIRE does not converge. observe, if given, sees each relaxed state.
 template <int Dim>
 CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& body, double sigma,
-                                          double lambda_max, const PlateSchedule& schedule);
+                                          double lambda_max, const PlateSchedule& schedule,
+                                          const PlateObserver& observe = {});
 
 // Vertex diameter sigma = 1 equals the rest edge length (neighbouring vertex disks touch); R from N.
 CompressionResult compress_shell(const CompressionOptions& options);

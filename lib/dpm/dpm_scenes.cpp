@@ -17,19 +17,13 @@
 #include "dpm/shear_scene.hpp"
 #include "dpm/slide3d_scene.hpp"
 #include "dpm/slump_scene.hpp"
+#include "dpm/system.hpp"
 
 #include <algorithm>
 
 namespace softgrain {
 
 namespace {
-
-// The memory of a 2D DpmSystem and its FIRE relaxation: 5.6 kB per vertex, measured as the growth of peak
-// RSS between dpm.jam runs of 100 and 1600 particles (10 and 14 vertices).
-MemoryEstimate dpm_vertex_memory(double vertices, const std::string& what)
-{
-    return per_item_memory(vertices, 5.6e3, what);
-}
 
 double integer(const Parameters& p, const std::string& name)
 {
@@ -60,7 +54,7 @@ const char* bidisperse_basis(const Parameters& p)
 
 MemoryEstimate bidisperse_memory(const Parameters& p)
 {
-    return dpm_vertex_memory(bidisperse_vertices(p), bidisperse_basis(p));
+    return dpm::dpm_vertex_memory(bidisperse_vertices(p), bidisperse_basis(p));
 }
 
 // A spectrum (eq. 9.28) takes the dense dynamical matrix and its eigenvectors: two n x n matrices.
@@ -96,7 +90,7 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
                        dpm::shear_friction_parameters(), dpm::run_shear_friction}
                      .needing([](const Parameters& p) {
-                         return dpm_vertex_memory(2 * integer(p, "nodes"), "vertices (2 x nodes)");
+                         return dpm::dpm_vertex_memory(2 * integer(p, "nodes"), "vertices (2 x nodes)");
                      }));
     registry.add(
         Scene{"dpm.packing_fraction",
@@ -104,8 +98,8 @@ void register_dpm_scenes(SceneRegistry& registry)
               "against Monte-Carlo, term by term (Table 9.2)",
               dpm::packing_fraction_parameters(), dpm::run_packing_fraction}
             .needing([](const Parameters& p) {
-                return dpm_vertex_memory(integer(p, "particles") * integer(p, "nodes"),
-                                         "vertices (particles x nodes)");
+                return dpm::dpm_vertex_memory(integer(p, "particles") * integer(p, "nodes"),
+                                              "vertices (particles x nodes)");
             }));
     registry.add(
         Scene{"dpm.crystal_modes",
@@ -127,7 +121,7 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",
                        dpm::rearrangement_parameters(), dpm::run_rearrangement}
                      .needing([](const Parameters& p) {
-                         return dpm_vertex_memory(integer(p, "particles"), "disks (particles)");
+                         return dpm::dpm_vertex_memory(integer(p, "particles"), "disks (particles)");
                      }));
     registry.add(
         Scene{"dpm.compress2d",
@@ -136,8 +130,8 @@ void register_dpm_scenes(SceneRegistry& registry)
               dpm::compress2d_parameters(), dpm::run_compress2d}
             .needing([](const Parameters& p) {
                 return p.choice("model") == "shell"
-                           ? dpm_vertex_memory(integer(p, "nodes"), "vertices (nodes)")
-                           : dpm_vertex_memory(integer(p, "network_nodes"), "nodes (network_nodes)");
+                           ? dpm::dpm_vertex_memory(integer(p, "nodes"), "vertices (nodes)")
+                           : dpm::dpm_vertex_memory(integer(p, "network_nodes"), "nodes (network_nodes)");
             }));
     registry.add(Scene{
         "dpm.compress3d",

@@ -8,6 +8,11 @@
 
 namespace softgrain::dpm {
 
+MemoryEstimate dpm_vertex_memory(double vertices, const std::string& what)
+{
+    return per_item_memory(vertices, 5.6e3, what);
+}
+
 InteractionKind interaction_from_name(const std::string& name)
 {
     if (name == "rough") return InteractionKind::rough;

@@ -1,0 +1,155 @@
+#include "compare/ring.hpp"
+
+#include "core/errors.hpp"
+#include "dpm/compress.hpp"
+#include "dpm/system.hpp"
+#include "spd/elastica.hpp"
+#include "spd/ring.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace softgrain::compare {
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// The SPD ring of the same material: eta = 0, elastic, out-of-plane length 1 m (it enters neither the
+// elastic ring's laws nor its observables).
+spd::RingSetup spd_setup(const RingComparisonSetup& c)
+{
+    spd::RingSetup s;
+    s.nodes = c.nodes;
+    s.radius = c.radius;
+    s.material = {c.E, c.nu, c.h, 1.0, INFINITY};
+    s.eta = 0;
+    s.plastic_ratio = INFINITY;
+    s.dt_factor = c.dt_factor;
+    return s;
+}
+
+RingComparison compress_spd(const RingComparisonSetup& c, const std::function<void(double)>& progress)
+{
+    const spd::RingSetup setup = spd_setup(c);
+    const spd::RingScales sc = spd::ring_scales(setup);
+    const spd::CompressionResult r =
+        spd::ring_compression(setup, c.strain_max, c.strain_step, false, c.relax_tolerance, progress);
+    RingComparison out;
+    out.bending_rigidity = sc.flexural_rigidity;
+    out.steps = r.steps;
+    out.dt = r.dt;
+    out.dt_critical = r.dt_critical;
+    out.dt_stable = spd::ring_between_walls(setup).model.stable_time_step();
+    const double b0 = 2 * c.radius;
+    for (const spd::CompressionState& st : r.states) {
+        // profile_x spans the top-wall contact from its leftmost to its rightmost touching vertex.
+        const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
+        const double contact = st.profile_x.empty() ? 0.0 : *hi - *lo;
+        out.states.push_back({st.strain, st.wall_force * c.radius * c.radius / out.bending_rigidity, st.width,
+                              st.volume, contact / b0});
+    }
+    return out;
+}
+
+RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<void(double)>& progress)
+{
+    // The same constants as the SPD ring (decision compare-ring-mapping).
+    const spd::RingScales sc = spd::ring_scales(spd_setup(c));
+    const int n = c.nodes;
+    const double R = c.radius, b0 = 2 * R, sigma = c.h;
+    const Eigen::Matrix2Xd polygon = dpm::regular_polygon(n, R, Eigen::Vector2d::Zero(), 0.0);
+    dpm::ShapeParameters shape;
+    shape.kl = sc.laws.k_s;
+    shape.l0 = sc.l0;
+    shape.kb = sc.laws.k_b;
+    shape.theta0 = 2 * pi / n;
+    shape.a0 = 0.5 * n * R * R * std::sin(2 * pi / n); // unused: k_a = 0 (no enclosed fluid, as eta = 0)
+    dpm::DpmSystem system;
+    Eigen::VectorXd x;
+    system.add_particle(polygon, sigma, shape, x);
+    const dpm::BodyEnergy body = [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
+        return dpm::total_energy(system, y, gradient, nullptr);
+    };
+    // Unit vertex masses, as the SPD ring. lambda_max <= 4 k_l (a chain of springs) + 16 k_b/l0^2 (the
+    // zig-zag bending mode): the eigenvalue of a sum is at most the sum of the largest ones.
+    const double lambda_max = 4 * shape.kl + 16 * shape.kb / (shape.l0 * shape.l0);
+    RingComparison out;
+    out.bending_rigidity = sc.flexural_rigidity;
+    out.dt = out.dt_critical = out.dt_stable = NAN;
+    const double force_scale = out.bending_rigidity / (R * R);
+
+    dpm::PlateSchedule schedule;
+    schedule.kp = sc.laws.k_s; // decision compare-ring-plates: the SPD wall contact k_n = k_s
+    // The rms force bound that implies a largest force component below relax_tolerance B/R^2, as in SPD.
+    schedule.force_tolerance = c.relax_tolerance * force_scale / std::sqrt(2.0 * n);
+    // A velocity below the one the tolerance force gives in one largest FIRE step, dt_max = 0.5/sqrt(lambda).
+    const double dt_max = 0.5 / std::sqrt(std::max(schedule.kp, lambda_max));
+    schedule.kinetic_tolerance = 0.5 * std::pow(schedule.force_tolerance * dt_max, 2);
+    // The driver lifts the ring onto the bottom plate (lowest vertex at sigma/2) and starts the top plate
+    // at the highest vertex + sigma/2: D = 2R + sigma, and the mid-line gap is b = b0 - delta.
+    const double D = polygon.row(1).maxCoeff() - polygon.row(1).minCoeff() + sigma;
+    const int increments = static_cast<int>(std::lround(c.strain_max / c.strain_step));
+    schedule.compressions.push_back(0.0);
+    for (int k = 1; k <= increments; ++k)
+        schedule.compressions.push_back(c.strain_max * k / increments * b0 / D);
+    const double A0 = dpm::particle_area(x, 0, n);
+    const auto observe = [&](const Eigen::VectorXd& y, double top, const dpm::CompressionSample& sample) {
+        const auto points = y.reshaped(2, n);
+        double xmin = INFINITY, xmax = -INFINITY, cmin = INFINITY, cmax = -INFINITY;
+        for (int i = 0; i < n; ++i) {
+            xmin = std::min(xmin, points(0, i));
+            xmax = std::max(xmax, points(0, i));
+            if (top - points(1, i) < 0.5 * sigma) { // touches the top plate
+                cmin = std::min(cmin, points(0, i));
+                cmax = std::max(cmax, points(0, i));
+            }
+        }
+        const double contact = cmax > cmin ? cmax - cmin : 0.0;
+        out.states.push_back({sample.delta_over_d * D / b0, sample.force * R * R / out.bending_rigidity,
+                              (xmax - xmin) / b0, dpm::particle_area(y, 0, n) / A0, contact / b0});
+        progress(static_cast<double>(out.states.size()) / schedule.compressions.size());
+    };
+    try {
+        out.steps = dpm::compress_between_plates<2>(x, body, sigma, lambda_max, schedule, observe).iterations;
+    } catch (const NumericalError& e) {
+        throw NumericalError(e.quantity + " at strain " + std::to_string(c.strain_step * (e.step)), e.step,
+                             "FIRE did not reach relax_tolerance; raise relax_tolerance or check the inputs");
+    }
+    return out;
+}
+
+} // namespace
+
+RingMethod ring_method_from_name(const std::string& name)
+{
+    if (name == "spd") return RingMethod::spd;
+    if (name == "dpm") return RingMethod::dpm;
+    throw InputError("model = '" + name + "': allowed spd | dpm");
+}
+
+RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress)
+{
+    if (setup.nodes % 4 != 0)
+        throw InputError("nodes = " + std::to_string(setup.nodes) +
+                         ": allowed a multiple of 4 (a vertex on each plate at eps = 0)");
+    const auto whole = [](double ratio) { return ratio > 0.5 && std::abs(ratio - std::round(ratio)) < 1e-9; };
+    if (!whole(0.1 / setup.strain_step))
+        throw InputError(
+            "strain_step = " + std::to_string(setup.strain_step) +
+            ": allowed 0.1/k for an integer k (the observables are reported at eps = 0.1, 0.2, ...)");
+    if (!whole(setup.strain_max / setup.strain_step))
+        throw InputError("strain_max = " + std::to_string(setup.strain_max) +
+                         ": allowed a whole multiple of strain_step = " + std::to_string(setup.strain_step));
+    return setup.method == RingMethod::spd ? compress_spd(setup, progress) : compress_dpm(setup, progress);
+}
+
+RingErrors elastica_errors(const RingObservation& o)
+{
+    const spd::ElasticaState el = spd::elastica_ring_between_plates(o.strain);
+    return {std::abs(o.force / el.force - 1), std::abs(o.width / el.width - 1),
+            std::abs(o.volume - el.volume), std::abs(o.contact_length - el.contact_length)};
+}
+
+} // namespace softgrain::compare
