@@ -13,6 +13,7 @@ leftover) fails, printing the command line to reproduce it. The seed is printed;
 
 Usage: fuzz_cli.py SOFTGRAIN [--runs N] [--seed S] [--timeout SECONDS]"""
 import argparse
+import os
 import json
 import random
 import re
@@ -115,12 +116,23 @@ def limit_memory():
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
 
 
+def sanitized_environment():
+    """AddressSanitizer reserves terabytes of address space for its shadow memory, so RLIMIT_AS cannot bound a
+    sanitized run: its allocator refuses single allocations above the same limit instead (operator new then
+    throws bad_alloc, which softgrain reports as out of memory)."""
+    options = [os.environ.get("ASAN_OPTIONS", ""), "allocator_may_return_null=1",
+               f"max_allocation_size_mb={MEMORY_LIMIT >> 20}"]
+    return dict(os.environ, ASAN_OPTIONS=":".join(o for o in options if o))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("softgrain")
     parser.add_argument("--runs", type=int, default=120)
     parser.add_argument("--seed", type=int, default=random.SystemRandom().randrange(2**32))
     parser.add_argument("--timeout", type=float, default=4.0)
+    parser.add_argument("--sanitized", action="store_true",
+                        help="softgrain is built with AddressSanitizer (make verify-sanitize)")
     args = parser.parse_args()
     rng = random.Random(args.seed)
     print(f"fuzz_cli: seed {args.seed} (replay with --seed {args.seed}), {args.runs} runs")
@@ -146,8 +158,9 @@ def main():
                     command += ["--set", f"{name}={text}"]
             command += ["--quiet", "--out", str(out)]
             try:
+                memory = dict(env=sanitized_environment()) if args.sanitized else dict(preexec_fn=limit_memory)
                 result = subprocess.run(["timeout", "-s", "TERM", str(args.timeout)] + command, capture_output=True,
-                                        text=True, preexec_fn=limit_memory, timeout=args.timeout + 30)
+                                        text=True, timeout=args.timeout + 30, **memory)
             except subprocess.TimeoutExpired:
                 failures.append((command, "did not stop within 30 s of SIGTERM"))
                 continue
