@@ -103,6 +103,14 @@ void run_compress3d(const Parameters& p, RunContext& context)
     s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
     s["contacts_at_max"] = c.samples.back().top_contacts;
     s["F_tilde_at_max"] = c.samples.back().force * scale;
+    // The whole curve, for comparisons against stored references (reproductions/compare, compare-solid-*).
+    std::vector<double> delta_tilde, force_tilde;
+    for (const CompressionSample& sample : c.samples) {
+        delta_tilde.push_back(sample.delta_over_d);
+        force_tilde.push_back(sample.force * scale);
+    }
+    s["delta_tilde"] = delta_tilde;
+    s["F_tilde"] = force_tilde;
     if (model == "spring_network") {
         s["network_springs"] = r.springs;
         s["coordination"] = 2.0 * r.springs / r.vertices;
@@ -116,8 +124,9 @@ std::vector<ParameterSpec> compress3d_parameters()
                               "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
                               "eq. 9.2) or spring-network ball (Fig. 9.11a)"),
         ParameterSpec::choice(
-            "mesh", "geodesic162", {"icosahedron", "geodesic42", "geodesic162", "geodesic642"},
-            "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642; paper's shell: 162)"),
+            "mesh", "geodesic162",
+            {"icosahedron", "geodesic42", "geodesic162", "geodesic642", "geodesic2562"},
+            "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642, 2562; paper's shell: 162)"),
         ParameterSpec::real("E", 1.0, "k_c/sigma", "tetrahedra: Young's modulus of each tetrahedron")
             .positive(),
         ParameterSpec::real("nu", 0.3, "1", "tetrahedra: Poisson ratio").at_least(0.0).below(0.5),

@@ -186,9 +186,10 @@ TriangleMesh mesh_from_name(const std::string& name)
     if (name == "geodesic42") return geodesic_icosahedron(1);
     if (name == "geodesic162") return geodesic_icosahedron(2);
     if (name == "geodesic642") return geodesic_icosahedron(3);
-    throw InputError(
-        "mesh = '" + name +
-        "': allowed tetrahedron | octahedron | icosahedron | geodesic42 | geodesic162 | geodesic642");
+    if (name == "geodesic2562") return geodesic_icosahedron(4);
+    throw InputError("mesh = '" + name +
+                     "': allowed tetrahedron | octahedron | icosahedron | geodesic42 | geodesic162 | "
+                     "geodesic642 | geodesic2562");
 }
 
 } // namespace softgrain::dpm

@@ -50,8 +50,8 @@ TriangleMesh geodesic_icosahedron(int subdivisions);
 // squares between the top and bottom rims. Not on the unit sphere. n >= 2.
 TriangleMesh slab_mesh(int n, double spacing, double thickness);
 
-// "tetrahedron" | "octahedron" | "icosahedron" | "geodesic42" | "geodesic162" | "geodesic642" (the mesh
-// choice of dpm.shape3d); throws InputError otherwise.
+// "tetrahedron" | "octahedron" | "icosahedron" | "geodesic42" | "geodesic162" | "geodesic642" |
+// "geodesic2562" (the mesh choice of dpm.shape3d); throws InputError otherwise.
 TriangleMesh mesh_from_name(const std::string& name);
 
 } // namespace softgrain::dpm
