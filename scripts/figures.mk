@@ -17,7 +17,16 @@ $(OUT)/index.html: $(REPORTS)
 RUNS := $(OUT)/runs-$(SCALE)
 $(shell rm -rf $(RUNS))
 
+# Progress: one line per finished figure, with its elapsed time, its expected time (its wall time in the
+# previous run at this scale, read here from the report that run left in $(OUT), before any figure replaces
+# it) and the figures done of those this invocation makes (every figure, or the reports named as goals, e.g.
+# `make -f scripts/figures.mk OUT=... $(OUT)/spd/spd-fig7.claims.json`) with an estimate of the time left.
+PROGRESS := $(OUT)/progress-$(SCALE)
+PLANNED := $(patsubst $(OUT)/%.claims.json,%,$(filter %.claims.json,$(MAKECMDGOALS)))
+$(shell python3 scripts/reproduce start-progress $(PROGRESS) $(or $(PLANNED),$(FIGURES)) --out $(OUT) --scale $(SCALE))
+
 # A figure that fails writes its error into its report and exits 1; make goes on with the others (the '-'),
 # and the index, written last, shows the failed figures at the top and exits 1 naming them.
 $(OUT)/%.claims.json: FORCE
-	-@python3 scripts/reproduce figure $* --scale $(SCALE) --softgrain $(SOFTGRAIN) --out $(OUT) --runs $(RUNS)
+	-@python3 scripts/reproduce figure $* --scale $(SCALE) --softgrain $(SOFTGRAIN) --out $(OUT) --runs $(RUNS) \
+	  --progress $(PROGRESS)
