@@ -1,4 +1,5 @@
-// softgrain: list | describe <scene> | run <scene|file.toml> [--set key=value]... [--out DIR] [--quiet]
+// softgrain: list | describe <scene> | run <scene|file.toml> [--set key=value]... [--out DIR] [--quiet] |
+//            advise <scene> --tolerance T [--sweep FILE]
 #include "core/cli.hpp"
 
 int main(int argc, char** argv)

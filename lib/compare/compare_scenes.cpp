@@ -133,6 +133,16 @@ void register_compare_scenes(SceneRegistry& registry)
     registry.add(Scene{"compare.ring",
                        "a thin elastic ring squeezed between two plates by SPD or DPM, against the elastica",
                        ring, run_ring}
+                     .advised_by({"compare",
+                                  "compare-ring-work-precision",
+                                  "method_index",
+                                  {"spd", "dpm"},
+                                  "dt_factor",
+                                  "spd",
+                                  "nodes",
+                                  "vertices N of the ring",
+                                  "force_error_max",
+                                  "largest |F/F_elastica - 1| over eps = 0.1 ... 0.6 (h/R = 0.005)"})
                      .needing([](const Parameters& p) {
                          const double n = static_cast<double>(p.integer("nodes"));
                          return p.choice("model") == "spd" ? spd::shell_model_memory(n, "vertices (nodes)")

@@ -162,6 +162,46 @@ int run_scene(const std::string& target, const std::vector<std::string>& assignm
     return exit_success;
 }
 
+// `advise`: per method, the cheapest run of the scene's stored sweep within the tolerance, and the cheapest
+// of all (issue 22: model no more than a scene needs).
+void advise_scene(const SceneRegistry& scenes, const std::string& name, double tolerance,
+                  const std::optional<fs::path>& given)
+{
+    const Scene& scene = scenes.find(name);
+    if (!scene.sweep) {
+        std::string advised;
+        for (const Scene& s : scenes.all())
+            if (s.sweep) advised += (advised.empty() ? "" : ", ") + s.name;
+        throw InputError("scene '" + name +
+                         "' has no stored work-precision sweep to advise from; allowed: " + advised);
+    }
+    const SweepTable& table = *scene.sweep;
+    const fs::path file = locate_sweep(table, given);
+    const Advice advice = advise(read_sweep(file, table), tolerance);
+    const std::string scale = sweep_scale(file);
+    std::cout << "sweep: " << file.string() << (scale.empty() ? "" : " (scale " + scale + ")") << "\n"
+              << "error: " << table.error_meaning << "\n"
+              << "resolution: " << table.resolution_meaning << "\n"
+              << "cost: wall time of one run where the sweep was made (it ranks, it does not predict)\n";
+    for (const Advice::PerMethod& m : advice.methods) {
+        std::cout << m.run.method << ": ";
+        if (m.met)
+            std::cout << "cheapest within " << tolerance << ": resolution " << m.run.resolution << ", error "
+                      << m.run.error << ", " << m.run.cost_s << " s\n";
+        else
+            std::cout << "no run within " << tolerance << "; its smallest error is " << m.run.error
+                      << " at resolution " << m.run.resolution << " (" << m.run.cost_s << " s)\n";
+    }
+    if (advice.recommended) {
+        std::cout << "recommended_method = " << advice.recommended->method << "\n"
+                  << "recommended_resolution = " << advice.recommended->resolution << "\n"
+                  << "recommended_cost_s = " << advice.recommended->cost_s << "\n";
+    } else {
+        std::cout << "recommended_method = none (no run of the sweep is within " << tolerance
+                  << "; a finer sweep, at a larger scale of its figure, may be)\n";
+    }
+}
+
 // A run stopped by SIGINT, SIGTERM or SIGHUP removes its partial directory and its checkpoint lock before it
 // exits with 128 + the signal's number. The signals are blocked in every thread (OpenMP's threads inherit the
 // mask) and taken by one watcher thread with sigwait, where removing a directory is safe, as it is not in a
@@ -212,6 +252,21 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     run->add_flag("--resume", checkpointing.resume,
                   "continue from DIR/<scene>.checkpoint (bit-for-bit) if it exists, else start afresh");
 
+    std::string advise_name;
+    double tolerance = 0;
+    std::optional<fs::path> sweep_file;
+    auto* advise_command = app.add_subcommand(
+        "advise", "the cheapest method and resolution of a scene within an error tolerance, from its stored "
+                  "work-precision sweep");
+    advise_command->add_option("scene", advise_name, "scene name")->required();
+    advise_command
+        ->add_option("--tolerance", tolerance, "largest acceptable error, in the sweep's error measure (> 0)")
+        ->required()
+        ->check(CLI::PositiveNumber);
+    advise_command->add_option("--sweep", sweep_file,
+                               "work-precision table to read (default: figures/<paper>/<figure>.dat, else "
+                               "data/<paper>/<figure>.dat)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -224,6 +279,8 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
             list_scenes(scenes);
         else if (*describe)
             describe_scene(scenes.find(describe_name));
+        else if (*advise_command)
+            advise_scene(scenes, advise_name, tolerance, sweep_file);
         else if (*run) {
             remove_partial_output_on_signal();
             return run_scene(run_target, assignments, out_dir, quiet, checkpointing, scenes);

@@ -5,10 +5,12 @@
 // (`register_core_scenes`, `register_sd_scenes`, ...); `lib/scenes.cpp` collects them.
 #pragma once
 
+#include "core/advice.hpp"
 #include "core/parameters.hpp"
 #include "core/resources.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,11 +29,19 @@ struct Scene
     // The memory the run needs at these parameters, checked before it starts (absent: a scene of fixed,
     // small size).
     std::function<MemoryEstimate(const Parameters&)> memory = nullptr;
+    // The work-precision sweep of its methods and resolutions that `softgrain advise` reads (absent: none).
+    std::optional<SweepTable> sweep;
 
     // This scene with its memory estimate: registry.add(Scene{...}.needing(estimate)).
     Scene needing(std::function<MemoryEstimate(const Parameters&)> estimate) &&
     {
         memory = std::move(estimate);
+        return std::move(*this);
+    }
+    // This scene with its stored work-precision sweep: registry.add(Scene{...}.advised_by(table)).
+    Scene advised_by(SweepTable table) &&
+    {
+        sweep = std::move(table);
         return std::move(*this);
     }
 };

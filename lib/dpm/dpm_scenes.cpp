@@ -133,16 +133,28 @@ void register_dpm_scenes(SceneRegistry& registry)
                            ? dpm::dpm_vertex_memory(integer(p, "nodes"), "vertices (nodes)")
                            : dpm::dpm_vertex_memory(integer(p, "network_nodes"), "nodes (network_nodes)");
             }));
-    registry.add(Scene{
-        "dpm.compress3d",
-        "DPM sec. 9.3.4: elastic tetrahedra (eqs. 9.15-9.17), an elastic shell or a spring-network ball "
-        "compressed between two plates, F~ against delta/D and its exponents (Fig. 9.11)",
-        dpm::compress3d_parameters(), dpm::run_compress3d}
-                     .needing([](const Parameters& p) {
-                         // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
-                         if (p.choice("model") != "spring_network") return MemoryEstimate{};
-                         return dense_matrix_memory(3 * integer(p, "network_nodes"), 1, "3 x network_nodes");
-                     }));
+    registry.add(
+        Scene{
+            "dpm.compress3d",
+            "DPM sec. 9.3.4: elastic tetrahedra (eqs. 9.15-9.17), an elastic shell or a spring-network ball "
+            "compressed between two plates, F~ against delta/D and its exponents (Fig. 9.11)",
+            dpm::compress3d_parameters(), dpm::run_compress3d}
+            .advised_by({"compare",
+                         "compare-solid-work-precision",
+                         "method_index",
+                         {"tetrahedra", "spring_network"},
+                         "",
+                         "",
+                         "vertices",
+                         "surface vertices + 1 (tetrahedra) or nodes (network)",
+                         "fe_error_max",
+                         "largest |F~/F~_FE - 1| over 0.01 <= delta/D <= 0.2 against the finite-element "
+                         "ball of the same law and nu (data/compare/solid_fe.toml)"})
+            .needing([](const Parameters& p) {
+                // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
+                if (p.choice("model") != "spring_network") return MemoryEstimate{};
+                return dense_matrix_memory(3 * integer(p, "network_nodes"), 1, "3 x network_nodes");
+            }));
     registry.add(Scene{"dpm.compress_box",
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
                        "box with repulsive walls: snapshots, overlaps, facets",
