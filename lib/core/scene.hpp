@@ -27,11 +27,19 @@ struct Scene
     // The memory the run needs at these parameters, checked before it starts (absent: a scene of fixed,
     // small size).
     std::function<MemoryEstimate(const Parameters&)> memory = nullptr;
+    // The scene writes ParaView frames with `run --vtk` (RunContext::vtk).
+    bool vtk = false;
 
     // This scene with its memory estimate: registry.add(Scene{...}.needing(estimate)).
     Scene needing(std::function<MemoryEstimate(const Parameters&)> estimate) &&
     {
         memory = std::move(estimate);
+        return std::move(*this);
+    }
+    // This scene, writing ParaView frames: registry.add(Scene{...}.with_vtk()).
+    Scene with_vtk() &&
+    {
+        vtk = true;
         return std::move(*this);
     }
 };
