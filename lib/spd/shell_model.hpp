@@ -128,7 +128,9 @@ class ShellModel
     void check_time_step(double dt) const;
 
     // Measures.
-    double area(int shell) const;  // polygon area [m^2], CCW positive
+    double area(int shell) const; // polygon area [m^2], CCW positive
+    // Area of a closed shell when it was added (its reference geometry) [m^2].
+    double reference_area(int shell) const { return core_V0_[shell] / shells_[shell].depth; }
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
     // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
