@@ -2,15 +2,17 @@
 """Reads the ParaView time series of `softgrain run --vtk` back with VTK's own reader and compares it with the
 run's tables and summary:
 
-  - small runs of spd.ring_compression (with unloading), spd.compaction (--vtk-every 5), dpm.compress2d (shell
-    and spring network) and dpm.jam (deformable particles, with decompression), each with --vtk;
+  - small runs of spd.ring_compression (with unloading), spd.compaction (--vtk-every 5), spd.tissue,
+    dpm.compress2d (shell and spring network) and dpm.jam (deformable particles, with decompression), each
+    with --vtk;
   - the .pvd collection lists frames 0 .. n-1, every part of every frame, each file present, time values
     non-decreasing, no temporary file left; the number of frames is the scene's (one per recorded or load
     step, thinned by --vtk-every) and the summary's vtk_frames;
   - each frame opens with vtkXMLPolyDataReader (VTK reports no error or warning), with the point and cell counts the
     scene implies (vertices per particle, particles, walls) and its arrays; per frame, values compared
     with the run's table at the same step: the ring's area ratio with V/V0, the strain with eps, the
-    compaction's strain and height with eps and H, the shell's delta/D with delta, jam's phi with phi;
+    compaction's strain and height with eps and H, the tissue's strain with eps_h and its broken links with
+    the links' broken flags, the shell's delta/D with delta, jam's phi with phi;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -299,6 +301,32 @@ def check_jam(softgrain, work):
         check(box.GetNumberOfLines() == 1, f"jam frame {k}: box outline")
 
 
+def check_tissue(softgrain, work):
+    """spd.tissue: every 20th record, the cells with W/W0 and the cohesive links."""
+    out = work / "tissue"
+    run(softgrain, out, "spd.tissue", "--vtk", "--checkpoint-every", "0", "--set", "columns=5", "rows=5",
+        "pull_rate=2e-5", "strain_max=0.1")
+    result = out / "spd.tissue"
+    rows = table(result / "tissue.dat")
+    series = read_series(result, "spd.tissue")
+    s = summary(result)
+    check(len(series) == (len(rows) + 19) // 20, f"tissue: {len(series)} frames for {len(rows)} records")
+    for k, frame in enumerate(series):
+        _, cells, _ = frame["particles"]
+        _, links, _ = frame["links"]
+        row = rows[20 * k]
+        check(cells.GetNumberOfPolys() == s["cells"] and cells.GetNumberOfPoints() == s["vertices"]
+              and links.GetNumberOfLines() == s["links"],
+              f"tissue frame {k}: {cells.GetNumberOfPolys()} cells, {cells.GetNumberOfPoints()} vertices, "
+              f"{links.GetNumberOfLines()} links; summary {s['cells']}, {s['vertices']}, {s['links']}")
+        check(close(field(cells, "strain"), row["eps_h"], 1e-10),
+              f"tissue frame {k}: strain {field(cells, 'strain')} against eps_h {row['eps_h']}")
+        broken = cell_values(links, "broken")
+        check(broken is not None and len(broken) == links.GetNumberOfLines() > 0
+              and sum(broken) == field(cells, "broken_links"), f"tissue frame {k}: links")
+        check(cell_values(cells, "W_over_W0") is not None, f"tissue frame {k}: W_over_W0 missing")
+
+
 def check_refusals(softgrain, work):
     for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
                            (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
@@ -327,6 +355,7 @@ def main():
     check_refusals(softgrain, work)
     check_ring(softgrain, work)
     check_compaction(softgrain, work)
+    check_tissue(softgrain, work)
     check_compress2d(softgrain, work)
     check_jam(softgrain, work)
     if failures:
