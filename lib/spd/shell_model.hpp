@@ -151,6 +151,17 @@ class ShellModel
     // Sum of contact forces received by the vertices of `shell` from other shells, and per vertex.
     Vec2 contact_force_on(int shell) const;
     double contact_normal(int vertex) const { return contact_normal_[vertex]; }
+    // A contact of the last force evaluation: vertex against the element (a, b) of another shell, the
+    // closest point of the element [m], the normal force f_n (eq. (6)) and tangential force f_t (eq. (7)) [N]
+    // and the force on the vertex [N] (the element's ends receive its opposite).
+    struct ContactView
+    {
+        int vertex, a, b;
+        Vec2 point;
+        double normal_force, tangential_force;
+        Vec2 force;
+    };
+    std::vector<ContactView> active_contacts() const; // in candidate order
     const std::vector<Shell>& shells() const { return shells_; }
     int vertices() const { return static_cast<int>(x_.size() / 2); }
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }

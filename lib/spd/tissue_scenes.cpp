@@ -256,7 +256,8 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     auto progress = ctx.progress("spd.tissue");
     // ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
     // N-th record), the time since the pull started as time value: the cells with W/W0 (Fig. 32) and the
-    // cohesive links as lines with their forces and broken state.
+    // cohesive links as lines with their forces and broken state, and the contacts (broken links become
+    // frictional contacts).
     const auto frame = [&](const Tissue& t, double time) {
         if (!ctx.vtk() || !ctx.vtk()->next(20)) return;
         const ShellModel& model = t.model;
@@ -276,7 +277,9 @@ void run_tissue(const Parameters& p, RunContext& ctx)
         links.cell_scalars("broken", std::move(broken));
         links.cell_scalars("normal_force", std::move(normal));
         links.cell_scalars("tangential_force", std::move(tangential));
-        std::vector<vtk::Part> parts{{"particles", std::move(cells)}, {"links", std::move(links)}};
+        std::vector<vtk::Part> parts{{"particles", std::move(cells)},
+                                     {"links", std::move(links)},
+                                     {"contacts", shell_contacts(model)}};
         const double H = clamp_height(t);
         for (auto& part : parts) {
             part.data.field("strain", std::log(H / t.height0));

@@ -78,12 +78,43 @@ vtk::PolyData shell_walls(const ShellModel& model, const std::vector<int>& shell
     return data;
 }
 
+vtk::PolyData shell_contacts(const ShellModel& model)
+{
+    vtk::PolyData data;
+    std::vector<double> normal, tangential, force;
+    std::vector<std::int64_t> vertex, particle, other;
+    // The shell of each vertex, from the shells' ranges.
+    std::vector<int> shell_of(static_cast<std::size_t>(model.vertices()), 0);
+    for (std::size_t p = 0; p < model.shells().size(); ++p) {
+        const Shell& s = model.shells()[p];
+        for (int i = s.first; i < s.first + s.count; ++i)
+            shell_of[static_cast<std::size_t>(i)] = static_cast<int>(p);
+    }
+    for (const ShellModel::ContactView& c : model.active_contacts()) {
+        data.add_line({data.add_point(model.vertex(c.vertex)), data.add_point(c.point)});
+        normal.push_back(c.normal_force);
+        tangential.push_back(c.tangential_force);
+        force.insert(force.end(), {c.force.x(), c.force.y(), 0.0});
+        vertex.push_back(c.vertex);
+        particle.push_back(shell_of[static_cast<std::size_t>(c.vertex)]);
+        other.push_back(shell_of[static_cast<std::size_t>(c.a)]);
+    }
+    data.cell_scalars("normal_force", std::move(normal));
+    data.cell_scalars("tangential_force", std::move(tangential));
+    data.cell_vectors("force", std::move(force));
+    data.cell_ids("vertex", std::move(vertex));
+    data.cell_ids("particle", std::move(particle));
+    data.cell_ids("other_particle", std::move(other));
+    return data;
+}
+
 std::vector<vtk::Part> shell_frame(const ShellModel& model, const std::vector<int>& particles,
                                    const std::vector<int>& walls,
                                    const std::vector<std::pair<std::string, double>>& fields)
 {
     std::vector<vtk::Part> parts{{"particles", shell_particles(model, particles)},
-                                 {"walls", shell_walls(model, walls)}};
+                                 {"walls", shell_walls(model, walls)},
+                                 {"contacts", shell_contacts(model)}};
     for (auto& part : parts)
         for (const auto& [name, value] : fields)
             part.data.field(name, value);

@@ -5,7 +5,8 @@
 // received) [N], hinge_torque M [N m] and plastic_ratio |M|/M^Y (1 on a plastic hinge, 0 for an elastic
 // shell). Cell data: particle_id (the shell's index in the model), area_ratio A/A0 (A0: the polygon area when
 // the shell was made), core_pressure p [Pa] (eq. (4)) and elastic_energy W [J]. Walls (open, rigid shells)
-// are polylines with point data velocity and force, and cell data wall_id. Lengths in m, z = 0.
+// are polylines with point data velocity and force, and cell data wall_id; contacts are lines
+// (shell_contacts). Lengths in m, z = 0.
 #pragma once
 
 #include "core/vtk.hpp"
@@ -18,7 +19,13 @@ namespace softgrain::spd {
 vtk::PolyData shell_particles(const ShellModel& model, const std::vector<int>& shells);
 vtk::PolyData shell_walls(const ShellModel& model, const std::vector<int>& shells);
 
-// A frame of two parts, "particles" and "walls", with the given field data (e.g. the strain).
+// The contacts of the last force evaluation (ShellModel::active_contacts) as lines from the contacting vertex
+// to the closest point of the element it touches, with cell data normal_force f_n, tangential_force f_t [N]
+// (eqs. (6)-(7)), force (on the vertex) [N], vertex and particle (the contacting vertex and its shell) and
+// other_particle (the shell of the element).
+vtk::PolyData shell_contacts(const ShellModel& model);
+
+// A frame of three parts, "particles", "walls" and "contacts", with the given field data (e.g. the strain).
 std::vector<vtk::Part> shell_frame(const ShellModel& model, const std::vector<int>& particles,
                                    const std::vector<int>& walls,
                                    const std::vector<std::pair<std::string, double>>& fields = {});

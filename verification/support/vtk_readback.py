@@ -10,7 +10,8 @@ run's tables and summary:
     step, thinned by --vtk-every) and the summary's vtk_frames;
   - each frame opens with vtkXMLPolyDataReader (VTK reports no error or warning), with the point and cell counts the
     scene implies (vertices per particle, particles, walls) and its arrays; per frame, values compared
-    with the run's table at the same step: the ring's area ratio with V/V0, the strain with eps, the
+    with the run's table at the same step: the ring's area ratio with V/V0, the top wall's force summed over
+    the contact lines with F/F* (relative to its largest), the strain with eps, the
     compaction's strain and height with eps and H, the tissue's strain with eps_h and its broken links with
     the links' broken flags, the shell's delta/D with delta, jam's phi with phi;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
@@ -155,10 +156,21 @@ def check_ring(softgrain, work):
     series = read_series(result, "spd.ring_compression")
     check(len(series) == len(rows) == 9, f"ring: {len(series)} frames for {len(rows)} table rows (9 expected)")
     check(summary(result).get("vtk_frames") == len(series), "ring: summary vtk_frames")
+    top_forces = []
     for k, (frame, row) in enumerate(zip(series, rows)):
         t, particles, _ = frame["particles"]
         _, walls, _ = frame["walls"]
+        _, contacts, _ = frame["contacts"]
         check(t == k, f"ring frame {k}: time {t}, expected the load step {k}")
+        # The top wall's force from the contact lines: minus the vertex force where the wall is the element,
+        # plus it where a wall vertex is the contacting one (contact_force_on in lib/spd/shell_model.hpp).
+        top = cell_values(walls, "wall_id")[1]
+        mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+        force = contacts.GetCellData().GetArray("force")
+        top_forces.append(sum((-1 if other[c] == top else 1 if mine[c] == top else 0) * force.GetTuple3(c)[1]
+                              for c in range(contacts.GetNumberOfLines())))
+        check(contacts.GetNumberOfLines() == contacts.GetNumberOfCells() and (row["F_over_Fstar"] <= 0 or mine),
+              f"ring frame {k}: {contacts.GetNumberOfLines()} contact lines at F/F* = {row['F_over_Fstar']}")
         check(particles.GetNumberOfPoints() == nodes and particles.GetNumberOfPolys() == 1,
               f"ring frame {k}: {particles.GetNumberOfPoints()} points, {particles.GetNumberOfPolys()} polygons")
         check(walls.GetNumberOfLines() == 2, f"ring frame {k}: {walls.GetNumberOfLines()} wall lines")
@@ -169,6 +181,12 @@ def check_ring(softgrain, work):
               f"ring frame {k}: area_ratio {ratio} against V/V0 = {row['V_over_V0']}")
         check(close(field(particles, "strain"), row["eps"], 1e-10),
               f"ring frame {k}: strain {field(particles, 'strain')} against eps = {row['eps']}")
+    # Wall force over its largest value, from the contacts and from the table's F/F*.
+    table_forces = [row["F_over_Fstar"] for row in rows]
+    biggest = max(range(len(rows)), key=lambda k: table_forces[k])
+    for k in range(len(rows)):
+        check(close(top_forces[k] / top_forces[biggest], table_forces[k] / table_forces[biggest], 1e-9),
+              f"ring frame {k}: top-wall force from the contacts {top_forces[k]} against F/F* {table_forces[k]}")
     size = sum(p.stat().st_size for p in (result / "vtk").iterdir())
     print(f"ring: {len(series)} frames, {size} bytes, {seconds:.2f} s with --vtk, {plain:.2f} s without")
 
@@ -248,7 +266,8 @@ def check_resume(softgrain, work, options, reference):
             and (result / "vtk" / name).stat().st_ino == inode]
     check("particles_000000.vtp" in kept and "particles_000001.vtp" in kept,
           f"resume: the frames before the checkpoint were written again (kept: {sorted(kept)})")
-    print(f"compaction resume: killed with {stopped_frames} frames on disk, {len(kept) // 2} kept from before "
+    kept_frames = sum(1 for name in kept if name.startswith("particles_"))
+    print(f"compaction resume: killed with {stopped_frames} frames on disk, {kept_frames} kept from before "
           f"the stop, resumed to {len(series)} frames, identical to the uninterrupted run")
 
 
