@@ -344,6 +344,8 @@ def check_tissue(softgrain, work):
         check(broken is not None and len(broken) == links.GetNumberOfLines() > 0
               and sum(broken) == field(cells, "broken_links"), f"tissue frame {k}: links")
         check(cell_values(cells, "W_over_W0") is not None, f"tissue frame {k}: W_over_W0 missing")
+        check(frame["contacts"][1].GetCellData().GetArray("normal_force") is not None,
+              f"tissue frame {k}: contacts without normal_force")
 
 
 def check_refusals(softgrain, work):
