@@ -188,7 +188,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
                        "right wall removed; run-out, angle of repose, layers at the front",
                        dpm::slump_parameters(), dpm::run_slump_scene}
-                     .needing(bidisperse_memory));
+                     .needing(bidisperse_memory)
+                     .with_vtk());
     registry.add(
         Scene{"dpm.slide3d",
               "DPM sec. 9.3.2 in 3D: a rigid 3D particle slid over a flat slab at fixed height, "

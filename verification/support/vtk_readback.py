@@ -3,8 +3,8 @@
 run's tables and summary:
 
   - small runs of spd.ring_compression (with unloading), spd.compaction (--vtk-every 5), spd.tissue,
-    dpm.compress2d (shell and spring network) and dpm.jam (deformable particles, with decompression), each
-    with --vtk;
+    dpm.compress2d (shell and spring network), dpm.slump (--vtk-every 5000 time steps) and dpm.jam
+    (deformable particles, with decompression), each with --vtk;
   - the .pvd collection lists frames 0 .. n-1, every part of every frame, each file present, time values
     non-decreasing, no temporary file left; the number of frames is the scene's (one per recorded or load
     step, thinned by --vtk-every) and the summary's vtk_frames;
@@ -348,6 +348,30 @@ def check_tissue(softgrain, work):
               f"tissue frame {k}: contacts without normal_force")
 
 
+def check_slump(softgrain, work):
+    """dpm.slump, a dynamic scene: a frame every 5000 time steps of both stages."""
+    out = work / "slump"
+    run(softgrain, out, "dpm.slump", "--vtk", "--vtk-every", "5000", "--set", "particles=4", "box_width=2",
+        "nodes_small=8", "nodes_large=10")
+    result = out / "dpm.slump"
+    s = summary(result)
+    series = read_series(result, "dpm.slump")
+    check(len(series) == s["steps"] // 5000 + 1, f"slump: {len(series)} frames for {s['steps']} steps")
+    released = 0
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        _, walls, _ = frame["walls"]
+        check(close(t, 5000 * k * s["dt"], 1e-12), f"slump frame {k}: time {t}, expected {5000 * k} dt")
+        check(field(particles, "step") == 5000 * k, f"slump frame {k}: step {field(particles, 'step')}")
+        check(particles.GetNumberOfPolys() == 4 and particles.GetNumberOfPoints() == 2 * 8 + 2 * 10,
+              f"slump frame {k}: {particles.GetNumberOfPolys()} polygons, {particles.GetNumberOfPoints()} points")
+        check(particles.GetPointData().GetArray("velocity") is not None, f"slump frame {k}: no velocity")
+        gone = field(particles, "released") == 1
+        released += gone
+        check(walls.GetNumberOfLines() == (2 if gone else 3), f"slump frame {k}: {walls.GetNumberOfLines()} walls")
+    check(0 < released < len(series), f"slump: {released} of {len(series)} frames after the release")
+
+
 def check_refusals(softgrain, work):
     for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
                            (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
@@ -378,6 +402,7 @@ def main():
     check_compaction(softgrain, work)
     check_tissue(softgrain, work)
     check_compress2d(softgrain, work)
+    check_slump(softgrain, work)
     check_jam(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
