@@ -21,7 +21,7 @@ namespace softgrain {
 namespace fs = std::filesystem;
 
 namespace {
-const std::string format_line = "softgrain checkpoint 1";
+const std::string format_line = "softgrain checkpoint 2";
 const std::string end_marker = "end of checkpoint";
 
 // "key = a in the checkpoint, b here" for the first parameter that differs between two JSON objects.
@@ -169,6 +169,8 @@ void Checkpoints::save(const std::function<void(Archive&)>& state)
     archive(parameters);
     archive(version);
     state(archive);
+    std::string companion = companion_save_ ? companion_save_() : std::string();
+    archive(companion);
     archive(end);
     const std::string bytes = content.str();
     const std::uint32_t checksum = crc32_of(bytes);
@@ -225,8 +227,11 @@ bool Checkpoints::resume(const std::function<void(Archive&)>& state)
         throw InputError("--resume: the checkpoint was written by softgrain " + version + ", this is " +
                          version_ + " (a state is only read by the binary that wrote it)" + allowed);
     state(archive);
+    std::string companion;
+    archive(companion);
     archive(end);
     if (end != end_marker) throw InputError("--resume: the checkpoint " + file_.string() + " is incomplete");
+    if (companion_restore_) companion_restore_(companion);
     last_ = std::chrono::steady_clock::now();
     resumed_ = true;
     return true;

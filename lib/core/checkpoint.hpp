@@ -7,11 +7,11 @@
 // directions cannot drift apart. Trivially copyable values (numbers, enums, structs of numbers) are copied as
 // bytes, Eigen matrices as their sizes and coefficients, containers element by element.
 //
-// File: the line "softgrain checkpoint 1", then the scene name, the parameters (JSON), the software
-// version, the scene's state, an end marker, and the CRC-32 (zlib) of all that. It is written to a temporary
-// file and renamed into place, so a run killed while writing leaves the previous checkpoint intact. A
-// checkpoint whose checksum does not match (a flipped bit, a truncation) is refused before any of it is
-// read, and every length read from it is bounded by the bytes that remain.
+// File: the line "softgrain checkpoint 2", then the scene name, the parameters (JSON), the software
+// version, the scene's state, the companion state (Checkpoints::attach), an end marker, and the CRC-32 (zlib)
+// of all that. It is written to a temporary file and renamed into place, so a run killed while writing leaves
+// the previous checkpoint intact. A checkpoint whose checksum does not match (a flipped bit, a truncation) is
+// refused before any of it is read, and every length read from it is bounded by the bytes that remain.
 #pragma once
 
 #include <Eigen/Core>
@@ -161,6 +161,15 @@ class Checkpoints
     bool resume(const std::function<void(Archive&)>& state);
     // Removes the checkpoint (the run is complete).
     void discard();
+    // A companion state saved after the scene's in every checkpoint and handed back on resume: the VTK
+    // series' frames (core/vtk.hpp), so that a resumed run continues them. Absent: an empty one is saved.
+    void attach(std::function<std::string()> save, std::function<void(const std::string&)> restore)
+    {
+        companion_save_ = std::move(save);
+        companion_restore_ = std::move(restore);
+    }
+    // Whether this run continues from a checkpoint (asked to resume and the file exists).
+    bool will_resume() const { return resume_ && std::filesystem::exists(file_); }
     const std::filesystem::path& file() const { return file_; }
     int saved() const { return saved_; }
     bool resumed() const { return resumed_; }
@@ -178,6 +187,8 @@ class Checkpoints
     mutable std::chrono::steady_clock::time_point last_;
     int saved_ = 0;
     bool resumed_ = false;
+    std::function<std::string()> companion_save_;
+    std::function<void(const std::string&)> companion_restore_;
 };
 
 } // namespace softgrain

@@ -146,16 +146,41 @@ void refuse_absurd_size(const Scene& scene, const Parameters& parameters)
     refuse_if_memory_exceeds(need, available_memory_bytes(), named);
 }
 
+// A ParaView time series: `--vtk`, with `--vtk-every N` every N-th of the scene's frames.
+struct VtkRequest
+{
+    bool enabled = false;
+    std::optional<std::int64_t> every;
+};
+
+void check_vtk_request(const Scene& scene, const VtkRequest& asked, const SceneRegistry& scenes)
+{
+    if (asked.every && *asked.every < 1)
+        throw InputError(
+            "--vtk-every " + std::to_string(*asked.every) +
+            ": allowed: an integer >= 1 (every N-th of the scene's frames: recorded states or load steps)");
+    if (asked.every && !asked.enabled)
+        throw InputError("--vtk-every " + std::to_string(*asked.every) +
+                         " without --vtk; allowed: --vtk --vtk-every N, or neither");
+    if (!asked.enabled || scene.vtk) return;
+    std::string allowed;
+    for (const auto& s : scenes.all())
+        if (s.vtk) allowed += (allowed.empty() ? "" : ", ") + s.name;
+    throw InputError("--vtk: scene '" + scene.name + "' writes no VTK frames yet; allowed for: " + allowed);
+}
+
 int run_scene(const std::string& target, const std::vector<std::string>& assignments,
               const std::string& out_dir, bool quiet, const CheckpointRequest& checkpointing,
-              const SceneRegistry& scenes)
+              const VtkRequest& vtk, const SceneRegistry& scenes)
 {
     RunRequest request = resolve_scene(target, scenes);
     apply_overrides(request.parameters, assignments);
+    check_vtk_request(*request.scene, vtk, scenes);
     if (request.scene->memory) refuse_absurd_size(*request.scene, request.parameters);
     auto checkpoints = checkpoints_for(*request.scene, request, checkpointing, out_dir, scenes);
     RunContext context(out_dir, request.output_name, request.parameters, quiet);
     context.enable_checkpoints(std::move(checkpoints));
+    if (vtk.enabled) context.enable_vtk(vtk.every);
     request.scene->run(request.parameters, context);
     const fs::path written = context.commit();
     if (!quiet) std::cout << "wrote " << written.string() << "\n";
@@ -252,6 +277,14 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
     run->add_flag("--resume", checkpointing.resume,
                   "continue from DIR/<scene>.checkpoint (bit-for-bit) if it exists, else start afresh");
 
+    VtkRequest vtk;
+    run->add_flag("--vtk", vtk.enabled,
+                  "write a ParaView time series DIR/<scene>/vtk/<scene>.pvd with one .vtp file per dataset "
+                  "and frame");
+    run->add_option(
+        "--vtk-every", vtk.every,
+        "with --vtk: keep every N-th of the scene's frames (its recorded states or load steps; default 1)");
+
     std::string advise_name;
     double tolerance = 0;
     std::optional<fs::path> sweep_file;
@@ -283,7 +316,7 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
             advise_scene(scenes, advise_name, tolerance, sweep_file);
         else if (*run) {
             remove_partial_output_on_signal();
-            return run_scene(run_target, assignments, out_dir, quiet, checkpointing, scenes);
+            return run_scene(run_target, assignments, out_dir, quiet, checkpointing, vtk, scenes);
         }
         return exit_success;
     } catch (const InputError& e) {

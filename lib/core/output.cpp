@@ -140,6 +140,16 @@ void move_into_place(const fs::path& partial, const fs::path& final_dir)
                   ": other runs kept replacing it");
 }
 
+// DIR/.<scene>.vtk-frames: where a run with checkpoints keeps its VTK frames until it completes. Appended
+// piece by piece (GCC 12's false -Wrestrict, as in move_into_place).
+fs::path vtk_frames_directory(const fs::path& final_dir)
+{
+    std::string name = ".";
+    name += final_dir.filename().string();
+    name += ".vtk-frames";
+    return final_dir.parent_path() / name;
+}
+
 } // namespace
 
 Table::Table(const fs::path& path, const std::vector<Column>& columns, const std::string& preamble)
@@ -222,6 +232,25 @@ RunContext::~RunContext()
     std::error_code ignored;
     tables_.clear();
     fs::remove_all(partial_dir_, ignored);
+    // Frames beside a checkpoint stay for --resume; without one they have nothing to continue.
+    if (!vtk_frames_dir_.empty() && !(checkpoints_ && fs::exists(checkpoints_->file())))
+        fs::remove_all(vtk_frames_dir_, ignored);
+}
+
+void RunContext::enable_vtk(std::optional<std::int64_t> every)
+{
+    const std::string name = final_dir_.filename().string();
+    if (!checkpoints_) {
+        vtk_ = std::make_unique<vtk::Series>(partial_dir_ / "vtk", name, every);
+        return;
+    }
+    // The frames directory is this run's: it holds the checkpoint's lock. Frames of an earlier run that
+    // left no checkpoint to resume are removed; those of a resumed one are trimmed to the checkpoint's.
+    vtk_frames_dir_ = vtk_frames_directory(final_dir_);
+    if (!checkpoints_->will_resume()) fs::remove_all(vtk_frames_dir_);
+    vtk_ = std::make_unique<vtk::Series>(vtk_frames_dir_, name, every);
+    checkpoints_->attach([this] { return vtk_->state(); },
+                         [this](const std::string& state) { vtk_->restore(state); });
 }
 
 Table& RunContext::table(const std::string& file_name, const std::vector<Column>& columns)
@@ -245,6 +274,16 @@ fs::path RunContext::commit()
     summary_["time_per_step_s"] =
         steps_ > 0 && !resumed ? nlohmann::json(wall / static_cast<double>(steps_)) : nlohmann::json();
     summary_["peak_memory_mib"] = peak_memory_mib();
+    if (vtk_) {
+        summary_["vtk_frames"] = vtk_->frames();
+        summary_["vtk_bytes"] = vtk_->bytes();
+        summary_["vtk_write_time_s"] = vtk_->write_seconds();
+        if (!vtk_frames_dir_.empty()) fs::rename(vtk_frames_dir_, partial_dir_ / "vtk");
+    } else if (checkpoints_) {
+        // Frames of a checkpoint resumed without --vtk: this result has no series to continue them.
+        std::error_code ignored;
+        fs::remove_all(vtk_frames_directory(final_dir_), ignored);
+    }
     if (checkpoints_) {
         summary_["checkpoints_written"] = checkpoints_->saved();
         summary_["resumed_from_checkpoint"] = checkpoints_->resumed();

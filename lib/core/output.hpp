@@ -10,6 +10,7 @@
 
 #include "core/checkpoint.hpp"
 #include "core/parameters.hpp"
+#include "core/vtk.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -98,6 +99,14 @@ class RunContext
     }
     Checkpoints* checkpoints() { return checkpoints_.get(); }
 
+    // The ParaView time series of `run --vtk` (core/vtk.hpp), after enable_checkpoints: frames go to
+    // DIR/<scene>/vtk/ with the result. With checkpoints they are written into DIR/.<scene>.vtk-frames/
+    // beside the checkpoint instead, kept there when the run stops (a resumed run continues them; each
+    // checkpoint records the frames so far) and moved into the result when it completes.
+    void enable_vtk(std::optional<std::int64_t> every);
+    // The series, or nullptr without --vtk: scenes write frames where their state is complete.
+    vtk::Series* vtk() { return vtk_.get(); }
+
     // Time steps (or minimiser iterations) taken; with the wall time they give the cost per step.
     void count_steps(std::int64_t steps) { steps_ += steps; }
     void record_seed(std::uint64_t seed) { summary_["seed"] = seed; }
@@ -118,6 +127,8 @@ class RunContext
     std::int64_t steps_ = 0;
     std::chrono::steady_clock::time_point start_;
     std::unique_ptr<Checkpoints> checkpoints_;
+    std::unique_ptr<vtk::Series> vtk_;
+    std::filesystem::path vtk_frames_dir_; // DIR/.<scene>.vtk-frames: the frames of a run with checkpoints
 };
 
 } // namespace softgrain

@@ -31,6 +31,8 @@ struct Scene
     std::function<MemoryEstimate(const Parameters&)> memory = nullptr;
     // The work-precision sweep of its methods and resolutions that `softgrain advise` reads (absent: none).
     std::optional<SweepTable> sweep;
+    // The scene writes ParaView frames with `run --vtk` (RunContext::vtk).
+    bool vtk = false;
 
     // This scene with its memory estimate: registry.add(Scene{...}.needing(estimate)).
     Scene needing(std::function<MemoryEstimate(const Parameters&)> estimate) &&
@@ -42,6 +44,12 @@ struct Scene
     Scene advised_by(SweepTable table) &&
     {
         sweep = std::move(table);
+        return std::move(*this);
+    }
+    // This scene, writing ParaView frames: registry.add(Scene{...}.with_vtk()).
+    Scene with_vtk() &&
+    {
+        vtk = true;
         return std::move(*this);
     }
 };

@@ -103,7 +103,7 @@ template CompressionResult compress_between_plates<2>(Eigen::VectorXd, const Bod
 template CompressionResult compress_between_plates<3>(Eigen::VectorXd, const BodyEnergy&, double, double,
                                                       const PlateSchedule&, const PlateObserver&);
 
-CompressionResult compress_shell(const CompressionOptions& o)
+DpmSystem compression_shell(const CompressionOptions& o, Eigen::VectorXd& x)
 {
     const double pi = std::numbers::pi, sigma = 1.0;
     const int n = o.nodes;
@@ -114,17 +114,24 @@ CompressionResult compress_shell(const CompressionOptions& o)
     k.kl = o.kl;
     k.kb = o.kb * sigma * sigma;
     DpmSystem system;
-    Eigen::VectorXd x;
     system.add_particle(regular_polygon(n, R, Eigen::Vector2d(0, 0), 0.0), sigma,
                         table_9_1_parameters(ShapeModel::shell, n, a0, minimum_shape_parameter(n), k), x);
+    return system;
+}
+
+CompressionResult compress_shell(const CompressionOptions& o, const PlateObserver& observe)
+{
+    Eigen::VectorXd x;
+    const DpmSystem system = compression_shell(o, x);
+    const double sigma = system.particles.front().sigma;
     const BodyEnergy body = [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return total_energy(system, y, gradient, nullptr);
     };
     return compress_between_plates<2>(x, body, sigma, vibrational_modes(system, x).eigenvalues.maxCoeff(),
-                                      o.schedule());
+                                      o.schedule(), observe);
 }
 
-CompressionResult compress_spring_network(const CompressionOptions& o)
+CompressionResult compress_spring_network(const CompressionOptions& o, const PlateObserver& observe)
 {
     const SpringNetwork network =
         disordered_triangular_disk(o.network_nodes, o.network_jitter, o.network_k, o.seed);
@@ -133,7 +140,8 @@ CompressionResult compress_spring_network(const CompressionOptions& o)
     };
     // A node joins at most 6 springs k (lengths ~ 1): lambda_max <= 4 * 6 k / 2 = 12 k (Gershgorin, unit
     // masses).
-    CompressionResult out = compress_between_plates<2>(network.x, body, 1.0, 12 * o.network_k, o.schedule());
+    CompressionResult out =
+        compress_between_plates<2>(network.x, body, 1.0, 12 * o.network_k, o.schedule(), observe);
     out.springs = static_cast<int>(network.springs.size());
     return out;
 }

@@ -96,10 +96,15 @@ CompressionResult compress_between_plates(Eigen::VectorXd x, const BodyEnergy& b
                                           const PlateObserver& observe = {});
 
 // Vertex diameter sigma = 1 equals the rest edge length (neighbouring vertex disks touch); R from N.
-CompressionResult compress_shell(const CompressionOptions& options);
+// observe, if given, sees each relaxed state (PlateObserver).
+CompressionResult compress_shell(const CompressionOptions& options, const PlateObserver& observe = {});
+// The shell of compress_shell as a one-particle system, its vertex coordinates into x (before the lift onto
+// the bottom plate).
+DpmSystem compression_shell(const CompressionOptions& options, Eigen::VectorXd& x);
 
 // Node diameter sigma = 1 = the lattice spacing.
-CompressionResult compress_spring_network(const CompressionOptions& options);
+CompressionResult compress_spring_network(const CompressionOptions& options,
+                                          const PlateObserver& observe = {});
 
 // Eq. (9.14) (Puttock and Thwaite, elastic cylinder of diameter D and length l between plates), in the
 // paper's dimensionless form: delta~ = (4 F~ D~/pi)(1 + ln[pi/(D~^3 F~)]), F~ = F_a (1 - nu^2)/(E D^2),

@@ -6,6 +6,7 @@
 #include "core/output.hpp"
 #include "dpm/compress.hpp"
 #include "dpm/spring_network.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <cmath>
 
@@ -26,7 +27,46 @@ void run_compress2d(const Parameters& p, RunContext& context)
     o.delta_max = p.real("delta_max");
     const bool network = p.choice("model") == "spring_network";
     if (network) context.record_seed(o.seed);
-    const CompressionResult r = network ? compress_spring_network(o) : compress_shell(o);
+    // ParaView frames, one per compression step, delta/D as the time value: the body (the shell as a
+    // polygon, the network as its nodes (vertex cells) and springs (lines)) and the plates.
+    Eigen::VectorXd shell_x;
+    const DpmSystem shell = compression_shell(o, shell_x);
+    const SpringNetwork net =
+        network && context.vtk()
+            ? disordered_triangular_disk(o.network_nodes, o.network_jitter, o.network_k, o.seed)
+            : SpringNetwork{};
+    const auto frame = [&](const Eigen::VectorXd& x, double top, const CompressionSample& sample) {
+        if (!context.vtk() || !context.vtk()->next()) return;
+        vtk::PolyData body;
+        if (network) {
+            // Cells: the nodes (vertex cells) first, then the springs (lines); spring_strain is NaN on nodes.
+            for (int v = 0; v < net.node_count(); ++v)
+                body.add_vertex(body.add_point(x(2 * v), x(2 * v + 1)));
+            std::vector<double> strain(static_cast<std::size_t>(net.node_count()), NAN);
+            for (const Spring& spring : net.springs) {
+                body.add_line({spring.i, spring.j});
+                strain.push_back((x.segment<2>(2 * spring.j) - x.segment<2>(2 * spring.i)).norm() /
+                                     spring.rest_length -
+                                 1);
+            }
+            body.point_scalars("radius",
+                               std::vector<double>(static_cast<std::size_t>(net.node_count()), 0.5));
+            body.cell_scalars("spring_strain", std::move(strain));
+        } else {
+            body = dpm_particles(shell, x);
+        }
+        double x_min = INFINITY, x_max = -INFINITY;
+        for (Eigen::Index v = 0; v < x.size() / 2; ++v)
+            x_min = std::min(x_min, x(2 * v)), x_max = std::max(x_max, x(2 * v));
+        std::vector<vtk::Part> parts{{"particles", std::move(body)},
+                                     {"plates", plates(x_min - 1, x_max + 1, 0.0, top)}};
+        for (auto& part : parts) {
+            part.data.field("delta_over_D", sample.delta_over_d);
+            part.data.field("force", sample.force);
+        }
+        context.vtk()->write(sample.delta_over_d, parts);
+    };
+    const CompressionResult r = network ? compress_spring_network(o, frame) : compress_shell(o, frame);
     context.count_steps(r.iterations);
     // Moduli for F~ (decision dpm-compress-moduli): the ordered triangular lattice for the network; for the
     // shell, E = k_l (stretching modulus k_l l0 over a wall thickness sigma = l0) and nu = 0.

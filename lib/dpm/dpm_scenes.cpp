@@ -115,7 +115,8 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
               "FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
               dpm::jam_scene_parameters(), dpm::run_jam}
-            .needing(bidisperse_memory));
+            .needing(bidisperse_memory)
+            .with_vtk());
     registry.add(Scene{"dpm.rearrangement",
                        "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",
@@ -132,7 +133,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                 return p.choice("model") == "shell"
                            ? dpm::dpm_vertex_memory(integer(p, "nodes"), "vertices (nodes)")
                            : dpm::dpm_vertex_memory(integer(p, "network_nodes"), "nodes (network_nodes)");
-            }));
+            })
+            .with_vtk());
     registry.add(
         Scene{
             "dpm.compress3d",
@@ -198,7 +200,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
                        "right wall removed; run-out, angle of repose, layers at the front",
                        dpm::slump_parameters(), dpm::run_slump_scene}
-                     .needing(bidisperse_memory));
+                     .needing(bidisperse_memory)
+                     .with_vtk());
     registry.add(
         Scene{"dpm.slide3d",
               "DPM sec. 9.3.2 in 3D: a rigid 3D particle slid over a flat slab at fixed height, "

@@ -4,6 +4,7 @@
 
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -34,6 +35,24 @@ void run_jam(const Parameters& p, RunContext& context)
     context.record_seed(o.seed);
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);
+    // ParaView frames, one per pressure state (onset, compression, decompression), the state's index as the
+    // time value (the pressure goes back down on decompression) with P, phi and the branch as field data.
+    if (auto* series = context.vtk()) {
+        DpmSystem system = r.system;
+        for (std::size_t k = 0; k < r.states.size(); ++k) {
+            if (!series->next()) continue;
+            const JamState& state = r.states[k];
+            system.box = state.box;
+            std::vector<vtk::Part> parts{{"particles", dpm_particles(system, state.x)},
+                                         {"box", box_outline(state.box)}};
+            for (auto& part : parts) {
+                part.data.field("pressure", state.pressure);
+                part.data.field("phi", state.phi);
+                part.data.field("decompression", state.decompression ? 1.0 : 0.0);
+            }
+            series->write(static_cast<double>(k), parts);
+        }
+    }
     const double phi_c = r.states.front().phi;
     auto& table = context.table("pressure.dat", {{"phi", "1", "packing fraction (eq. 9.22 or disk area)"},
                                                  {"dphi", "1", "phi - phi_c"},

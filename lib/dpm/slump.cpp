@@ -116,7 +116,7 @@ double slump_time_step(const DpmSystem& s, const Eigen::VectorXd& x)
 
 RestResult run_to_rest(const DpmSystem& s, const SlumpWorld& world, Eigen::VectorXd& x, Eigen::VectorXd& v,
                        FloorContacts& floor, double dt, double rest_tolerance, long max_steps,
-                       const char* stage)
+                       const char* stage, const SlumpObserver& observe, long steps_before)
 {
     RestResult out;
     Eigen::VectorXd force;
@@ -128,6 +128,8 @@ RestResult run_to_rest(const DpmSystem& s, const SlumpWorld& world, Eigen::Vecto
         x += dt * v;
         slump_forces(s, world, x, floor, force, nullptr);
         v += 0.5 * dt * (force - world.damping * v);
+        if (observe)
+            observe(s, world, x, v, steps_before + step, static_cast<double>(steps_before + step) * dt);
         if (step % 50 != 0) continue;
         if (!x.allFinite())
             throw NumericalError(std::string(stage) + ": non-finite vertex position", step,
@@ -147,7 +149,7 @@ RestResult run_to_rest(const DpmSystem& s, const SlumpWorld& world, Eigen::Vecto
                          "rest_tolerance");
 }
 
-SlumpResult run_slump(const SlumpOptions& o)
+SlumpResult run_slump(const SlumpOptions& o, const SlumpObserver& observe)
 {
     const double pi = std::numbers::pi, ratio = 1.4;
     SlumpResult out;
@@ -189,10 +191,13 @@ SlumpResult run_slump(const SlumpOptions& o)
     SlumpWorld world{o.gravity, o.wall_friction, o.tangential_stiffness, o.damping, out.box_width, true};
     Eigen::VectorXd v = Eigen::VectorXd::Zero(x.size());
     FloorContacts floor;
-    out.confined.rest = run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "confined");
+    if (observe) observe(s, world, x, v, 0, 0.0);
+    out.confined.rest =
+        run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "confined", observe);
     out.confined.x = x;
     world.right_wall = std::numeric_limits<double>::infinity(); // the right wall is removed
-    out.released.rest = run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "released");
+    out.released.rest = run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "released",
+                                    observe, out.confined.rest.steps);
     out.released.x = x;
     return out;
 }

@@ -20,6 +20,7 @@
 #include "dpm/system.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -73,10 +74,17 @@ struct RestResult
     WallForces walls;
 };
 
-// Damped MD from x, v until at rest (rest_tolerance) or NumericalError after max_steps.
+// Sees the state after each time step: the system, the world, positions, velocities, the steps taken in all
+// stages and the time they span [time unit sqrt(m/k_c)].
+using SlumpObserver = std::function<void(const DpmSystem&, const SlumpWorld&, const Eigen::VectorXd& x,
+                                         const Eigen::VectorXd& v, long step, double time)>;
+
+// Damped MD from x, v until at rest (rest_tolerance) or NumericalError after max_steps. observe, if given,
+// sees each step, numbered from steps_before + 1.
 RestResult run_to_rest(const DpmSystem& system, const SlumpWorld& world, Eigen::VectorXd& x,
                        Eigen::VectorXd& v, FloorContacts& floor, double dt, double rest_tolerance,
-                       long max_steps, const char* stage);
+                       long max_steps, const char* stage, const SlumpObserver& observe = {},
+                       long steps_before = 0);
 
 // Largest stable time step estimate: 0.2/omega_max of the stiffest particle plus its contacts.
 double slump_time_step(const DpmSystem& system, const Eigen::VectorXd& x);
@@ -96,7 +104,8 @@ struct SlumpResult
     double dt = 0;
 };
 
-SlumpResult run_slump(const SlumpOptions& options);
+// observe, if given, sees the initial state (step 0) and every step of both stages.
+SlumpResult run_slump(const SlumpOptions& options, const SlumpObserver& observe = {});
 
 // Free surface: topmost vertex height (+ sigma/2) in bins of width `bin` from x = 0; NaN for empty bins.
 std::vector<double> surface_profile(const Eigen::VectorXd& x, double bin);

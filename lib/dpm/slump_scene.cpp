@@ -5,6 +5,7 @@
 
 #include "core/output.hpp"
 #include "dpm/slump.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -57,7 +58,38 @@ void run_slump_scene(const Parameters& p, RunContext& context)
     o.max_steps = p.integer("max_steps");
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     context.record_seed(o.seed);
-    const SlumpResult r = run_slump(o);
+    // ParaView frames every 2000 time steps (--vtk-every N: every N steps), from the start through both
+    // stages, the simulation time step * dt as time value: the particles with their vertex velocities and
+    // the walls (floor, left wall, and the right wall until it is removed).
+    const auto vtk_frame = [&](const DpmSystem& system, const SlumpWorld& world, const Eigen::VectorXd& x,
+                               const Eigen::VectorXd& v, long step, double time) {
+        if (!context.vtk() || !context.vtk()->due(step, 2000)) return;
+        vtk::PolyData particles = dpm_particles(system, x);
+        std::vector<double> velocity;
+        for (Eigen::Index k = 0; k < v.size(); k += 2)
+            velocity.insert(velocity.end(), {v(k), v(k + 1), 0.0});
+        particles.point_vectors("velocity", std::move(velocity));
+        double top = 0, right = 0;
+        for (Eigen::Index k = 0; k < x.size(); k += 2)
+            top = std::max(top, x(k + 1)), right = std::max(right, x(k));
+        vtk::PolyData walls;
+        const double height = top + 1, reach = std::isfinite(world.right_wall) ? world.right_wall : right + 1;
+        walls.add_line({walls.add_point(0, 0), walls.add_point(reach, 0)});
+        walls.add_line({walls.add_point(0, 0), walls.add_point(0, height)});
+        std::vector<std::int64_t> ids{0, 1};
+        if (std::isfinite(world.right_wall)) {
+            walls.add_line({walls.add_point(world.right_wall, 0), walls.add_point(world.right_wall, height)});
+            ids.push_back(2);
+        }
+        walls.cell_ids("wall_id", std::move(ids)); // 0 floor, 1 left, 2 right
+        std::vector<vtk::Part> parts{{"particles", std::move(particles)}, {"walls", std::move(walls)}};
+        for (auto& part : parts) {
+            part.data.field("step", static_cast<double>(step));
+            part.data.field("released", std::isfinite(world.right_wall) ? 0.0 : 1.0);
+        }
+        context.vtk()->write(time, parts);
+    };
+    const SlumpResult r = run_slump(o, vtk_frame);
     context.count_steps(r.confined.rest.steps + r.released.rest.steps);
     const DpmSystem& s = r.system;
     const double D = r.diameter;

@@ -6,6 +6,7 @@
 #include "spd/compaction.hpp"
 #include "spd/shell_model.hpp"
 #include "spd/spd_scenes.hpp"
+#include "spd/vtk_frames.hpp"
 
 #include <gsl/gsl_fit.h>
 #include <omp.h>
@@ -115,9 +116,17 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     const RingScales sc = ring_scales(ring);
     const double R = ring.radius, s_depth = ring.material.s, sigma_star = sc.characteristic.sigma_star;
     auto progress = ctx.progress("spd.compaction");
+    // ParaView frames at the recorded states (`records` per half cycle), the time since the top wall
+    // started to move as the time value.
+    const auto frame = [&](const Assembly& a, const CompactionState& st) {
+        if (ctx.vtk() && ctx.vtk()->next())
+            ctx.vtk()->write(st.time, shell_frame(a.model, a.particles, {a.bottom, a.top, a.left, a.right},
+                                                  {{"strain", st.strain},
+                                                   {"height", st.height},
+                                                   {"loading", st.loading ? 1.0 : 0.0}}));
+    };
     const CompactionResult r = compaction(
-        setup, [](const Assembly&, const CompactionState&) {}, [&](double f) { progress.update(f); },
-        ctx.checkpoints());
+        setup, frame, [&](double f) { progress.update(f); }, ctx.checkpoints());
     // Quasi-static check: largest |F_top - F_bottom| over the loading, relative to the largest top force.
     double mismatch = 0, force_max = 0;
     for (const CompactionState& st : r.states)
@@ -289,7 +298,8 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
         },
         run_compaction,
         /*checkpoints=*/true}
-                     .needing(rings_memory));
+                     .needing(rings_memory)
+                     .with_vtk());
 }
 
 } // namespace softgrain

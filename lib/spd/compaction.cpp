@@ -265,6 +265,7 @@ CompactionResult compaction(const CompactionSetup& setup,
             st.solid_area += solid_area(model, p);
         st.kinetic_energy = model.kinetic_energy();
         st.loading = loading;
+        st.time = static_cast<double>(model.steps() - result.deposit.steps) * result.dt;
         return st;
     };
     const auto record = [&](bool loading) {

@@ -86,6 +86,7 @@ struct CompactionState
     double solid_area;     // sum of solid_area [m^2]
     double kinetic_energy; // [J]
     bool loading;
+    double time; // since the top wall started to move (the deposit's steps excluded) [s]
 };
 
 // The sample at one instant: vertex positions of each particle and its elastic energy W_i [J].

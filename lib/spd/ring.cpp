@@ -101,7 +101,8 @@ double ring_damping(const RingSetup& setup)
 }
 
 CompressionResult ring_compression(const RingSetup& setup, double strain_max, double strain_step, bool unload,
-                                   double relax_tolerance, const std::function<void(double)>& progress)
+                                   double relax_tolerance, const std::function<void(double)>& progress,
+                                   const CompressionObserver& observe)
 {
     const RingScales sc = ring_scales(setup);
     const double R = setup.radius, r = sc.radius_vertex, b0 = 2 * R;
@@ -171,6 +172,7 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
             s.shape_y.push_back(model.vertex(i).y());
         }
         result.states.push_back(std::move(s));
+        if (observe) observe(walls, result.states.back());
     };
 
     // Moves both walls symmetrically to the gap `target` over move_steps, then relaxes.

@@ -84,8 +84,10 @@ struct CompressionResult
 
 // Quasi-static compression to strain_max in steps of strain_step (walls moved slowly, then relaxed until the
 // largest unbalanced force is below relax_tolerance * force scale), then, if unload, back to eps = 0 and a
-// release of the walls. observe(state) is called after each relaxation.
+// release of the walls. observe(model, state) is called at each recorded state (after each relaxation).
+using CompressionObserver = std::function<void(const RingBetweenWalls&, const CompressionState&)>;
 CompressionResult ring_compression(const RingSetup& setup, double strain_max, double strain_step, bool unload,
-                                   double relax_tolerance, const std::function<void(double)>& progress);
+                                   double relax_tolerance, const std::function<void(double)>& progress,
+                                   const CompressionObserver& observe = {});
 
 } // namespace softgrain::spd

@@ -356,6 +356,18 @@ void ShellModel::evaluate_contact(Candidate& cand, double old_friction, double d
     cand.force = F;
 }
 
+std::vector<ShellModel::ContactView> ShellModel::active_contacts() const
+{
+    std::vector<ContactView> out;
+    for (const Candidate& cand : candidates_)
+        if (cand.active)
+            out.push_back(
+                {cand.vertex, cand.a, cand.b,
+                 point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).closest,
+                 cand.fn, cand.friction, cand.force});
+    return out;
+}
+
 // One contact per (vertex, other shell): the nearest of its touching elements (decision
 // spd-contact-nearest-element). At a concave corner of the other shell a vertex lies within reach of both
 // adjacent elements and projects inside both; counting both doubles the force there, and the second term

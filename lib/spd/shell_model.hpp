@@ -128,7 +128,9 @@ class ShellModel
     void check_time_step(double dt) const;
 
     // Measures.
-    double area(int shell) const;  // polygon area [m^2], CCW positive
+    double area(int shell) const; // polygon area [m^2], CCW positive
+    // Area of a closed shell when it was added (its reference geometry) [m^2].
+    double reference_area(int shell) const { return core_V0_[shell] / shells_[shell].depth; }
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
     // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
@@ -149,6 +151,17 @@ class ShellModel
     // Sum of contact forces received by the vertices of `shell` from other shells, and per vertex.
     Vec2 contact_force_on(int shell) const;
     double contact_normal(int vertex) const { return contact_normal_[vertex]; }
+    // A contact of the last force evaluation: vertex against the element (a, b) of another shell, the
+    // closest point of the element [m], the normal force f_n (eq. (6)) and tangential force f_t (eq. (7)) [N]
+    // and the force on the vertex [N] (the element's ends receive its opposite).
+    struct ContactView
+    {
+        int vertex, a, b;
+        Vec2 point;
+        double normal_force, tangential_force;
+        Vec2 force;
+    };
+    std::vector<ContactView> active_contacts() const; // in candidate order
     const std::vector<Shell>& shells() const { return shells_; }
     int vertices() const { return static_cast<int>(x_.size() / 2); }
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }

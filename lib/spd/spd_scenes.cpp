@@ -7,6 +7,7 @@
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
 #include "spd/shell_model.hpp"
+#include "spd/vtk_frames.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -183,9 +184,21 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     const bool plastic = std::isfinite(setup.plastic_ratio);
     const RingScales sc = ring_scales(setup);
     auto progress = ctx.progress("spd.ring_compression");
-    const CompressionResult r =
-        ring_compression(setup, strain_max, p.real("strain_step"), unload, p.real("relax_tolerance"),
-                         [&](double f) { progress.update(f); });
+    // ParaView frames: one per recorded load step, the step's index as the time value (the strain goes back
+    // down on unloading) and the strain as field data.
+    std::int64_t load_step = 0;
+    const auto frame = [&](const RingBetweenWalls& w, const CompressionState& st) {
+        if (ctx.vtk() && ctx.vtk()->due(load_step))
+            ctx.vtk()->write(static_cast<double>(load_step),
+                             shell_frame(w.model, {w.ring}, {w.bottom_wall, w.top_wall},
+                                         {{"load_step", static_cast<double>(load_step)},
+                                          {"strain", st.strain},
+                                          {"loading", st.loading ? 1.0 : 0.0}}));
+        ++load_step;
+    };
+    const CompressionResult r = ring_compression(
+        setup, strain_max, p.real("strain_step"), unload, p.real("relax_tolerance"),
+        [&](double f) { progress.update(f); }, frame);
     progress.finish();
     ctx.count_steps(r.steps);
     const bool elastica = setup.eta == 0 && !plastic;
@@ -460,7 +473,8 @@ void register_spd_scenes(SceneRegistry& registry)
                 .positive(),
         }),
         run_ring_compression}
-                     .needing(ring_memory));
+                     .needing(ring_memory)
+                     .with_vtk());
     register_spd_assembly_scenes(registry);
     register_spd_tissue_scenes(registry);
 }

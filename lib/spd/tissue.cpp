@@ -379,7 +379,7 @@ Cohesion cohesion(const Tissue& tissue)
 }
 
 PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress,
-                Checkpoints* checkpoints)
+                Checkpoints* checkpoints, const PullObserver& observe)
 {
     PullResult result;
     ShellModel& model = tissue.model;
@@ -429,6 +429,7 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
     };
     if (!checkpoints || !checkpoints->resume(whole_state)) {
         record();
+        if (observe) observe(tissue, 0.0);
         snapshot();
     }
     for (long n = taken + 1; n <= total; ++n) {
@@ -437,6 +438,7 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
         taken = n;
         if (n % interval == 0 || n == total) {
             record();
+            if (observe) observe(tissue, static_cast<double>(n) * result.dt);
             const TissueRecord& rec = result.records.back();
             force_max = std::max(force_max, rec.force_top);
             progress(static_cast<double>(n) / total);

@@ -142,8 +142,11 @@ struct PullResult
 };
 // With `checkpoints`, the pull writes its whole state when one is due and, if asked to, starts from the last
 // one: the result is the same, bit for bit, as that of an uninterrupted pull of the same tissue.
+// observe(tissue, time) is called at each record (time since the pull started [s]), but not again for the
+// records a checkpoint restored.
+using PullObserver = std::function<void(const Tissue&, double)>;
 PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void(double)>& progress,
-                Checkpoints* checkpoints = nullptr);
+                Checkpoints* checkpoints = nullptr, const PullObserver& observe = {});
 // Writes or reads a snapshot for a checkpoint (core/checkpoint.hpp).
 void transfer(Archive& archive, TissueSnapshot& snapshot);
 

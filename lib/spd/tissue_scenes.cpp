@@ -4,6 +4,7 @@
 #include "spd/shell_model.hpp"
 #include "spd/spd_scenes.hpp"
 #include "spd/tissue.hpp"
+#include "spd/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -253,8 +254,42 @@ void run_tissue(const Parameters& p, RunContext& ctx)
                                            7e-4 * law0.f_t0 / law0.k_t, dt_probe);
 
     auto progress = ctx.progress("spd.tissue");
+    // ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
+    // N-th record), the time since the pull started as time value: the cells with W/W0 (Fig. 32) and the
+    // cohesive links as lines with their forces and broken state, and the contacts (broken links become
+    // frictional contacts).
+    const auto frame = [&](const Tissue& t, double time) {
+        if (!ctx.vtk() || !ctx.vtk()->next(20)) return;
+        const ShellModel& model = t.model;
+        vtk::PolyData cells = shell_particles(model, t.cells);
+        std::vector<double> energy;
+        for (int c : t.cells)
+            energy.push_back(model.elastic_energy(c) / sc.W0);
+        cells.cell_scalars("W_over_W0", std::move(energy));
+        vtk::PolyData links;
+        std::vector<double> normal, tangential, broken;
+        for (const CohesiveLink& link : model.links()) {
+            links.add_line({links.add_point(model.vertex(link.a)), links.add_point(model.vertex(link.b))});
+            normal.push_back(link.broken ? 0.0 : link.f_n);
+            tangential.push_back(link.broken ? 0.0 : link.f_t);
+            broken.push_back(link.broken ? 1.0 : 0.0);
+        }
+        links.cell_scalars("broken", std::move(broken));
+        links.cell_scalars("normal_force", std::move(normal));
+        links.cell_scalars("tangential_force", std::move(tangential));
+        std::vector<vtk::Part> parts{{"particles", std::move(cells)},
+                                     {"links", std::move(links)},
+                                     {"contacts", shell_contacts(model)}};
+        const double H = clamp_height(t);
+        for (auto& part : parts) {
+            part.data.field("strain", std::log(H / t.height0));
+            part.data.field("force_top", top_clamp_force(t));
+            part.data.field("broken_links", model.broken_links());
+        }
+        ctx.vtk()->write(time, parts);
+    };
     const PullResult r = pull(
-        tissue, pulling, [&](double f) { progress.update(f); }, ctx.checkpoints());
+        tissue, pulling, [&](double f) { progress.update(f); }, ctx.checkpoints(), frame);
     progress.finish();
     ctx.count_steps(r.steps);
 
@@ -396,7 +431,8 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
                                                             double(p.integer("columns")) * 6.0 *
                                                             double(p.integer("edge_segments")),
                                                         "vertices (rows x columns x 6 x edge_segments)");
-                     }));
+                     })
+                     .with_vtk());
 }
 
 } // namespace softgrain

@@ -1,0 +1,417 @@
+#!/usr/bin/python3
+"""Reads the ParaView time series of `softgrain run --vtk` back with VTK's own reader and compares it with the
+run's tables and summary:
+
+  - small runs of spd.ring_compression (with unloading), spd.compaction (--vtk-every 5), spd.tissue,
+    dpm.compress2d (shell and spring network), dpm.slump (--vtk-every 5000 time steps) and dpm.jam
+    (deformable particles, with decompression), each with --vtk;
+  - the .pvd collection lists frames 0 .. n-1, every part of every frame, each file present, time values
+    non-decreasing, no temporary file left; the number of frames is the scene's (one per recorded or load
+    step, thinned by --vtk-every) and the summary's vtk_frames;
+  - each frame opens with vtkXMLPolyDataReader (VTK reports no error or warning), with the point and cell counts the
+    scene implies (vertices per particle, particles, walls) and its arrays; per frame, values compared
+    with the run's table at the same step: the ring's area ratio with V/V0, the top wall's force summed over
+    the contact lines with F/F* (relative to its largest), the strain with eps, the
+    compaction's strain and height with eps and H, the tissue's strain with eps_h and its broken links with
+    the links' broken flags, the shell's delta/D with delta, jam's phi with phi;
+  - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
+    time values and frame files, byte for byte, as the uninterrupted run.
+
+  vtk_readback.py SOFTGRAIN [WORKDIR]
+
+Exit status: 0 all checks pass; 1 a check failed (each failure named on stderr); 77 VTK's Python module is
+missing (`scripts/install-deps --vtk` installs python3-vtk9), which ctest reports as skipped. Run it with
+Debian's /usr/bin/python3, for which python3-vtk9 is installed.
+"""
+
+import json
+import math
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+SKIP = 77
+try:
+    from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+except ImportError:
+    vtkXMLPolyDataReader = None
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL: " + message, file=sys.stderr)
+    return condition
+
+
+def close(a, b, tol=1e-12):
+    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
+
+
+def run(softgrain, out, scene, *options, expect=0):
+    command = [softgrain, "run", scene, "--out", str(out), "--quiet", *options]
+    started = time.monotonic()
+    done = subprocess.run(command, capture_output=True, text=True)
+    check(done.returncode == expect, f"{' '.join(command)}: exit {done.returncode}, expected {expect}: "
+          f"{done.stderr.strip()}")
+    return done, time.monotonic() - started
+
+
+def table(path):
+    """Rows of a softgrain .dat table as dicts of floats."""
+    lines = [l for l in Path(path).read_text().splitlines() if l and not l.startswith("#")]
+    names = lines[0].split()
+    return [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
+
+
+# VTK's errors and warnings (a reader, its XML parser or its executive) go to this window, not to stderr.
+messages = None
+seen = 0
+
+
+def vtk_messages():
+    """What VTK reported since the last call."""
+    global seen
+    text = messages.GetOutput() if messages is not None else ""
+    new, seen = text[seen:], len(text)
+    return new.strip()
+
+
+def read_series(result_dir, name):
+    """The collection's frames as a list (per frame) of {part name: (time, vtkPolyData, file)}; checks the
+    collection and that each file reads without error."""
+    vtk_dir = Path(result_dir) / "vtk"
+    pvd = vtk_dir / f"{name}.pvd"
+    if not check(pvd.is_file(), f"{pvd} missing"):
+        return []
+    root = ET.parse(pvd).getroot()
+    check(root.get("type") == "Collection", f"{pvd}: VTKFile type {root.get('type')}")
+    entries = root.find("Collection").findall("DataSet")
+    frames = {}
+    for e in entries:
+        file = e.get("file")
+        stem = Path(file).stem
+        frame = int(stem.rsplit("_", 1)[1])
+        frames.setdefault(frame, {})[e.get("name")] = (float(e.get("timestep")), file, int(e.get("part")))
+    check(sorted(frames) == list(range(len(frames))), f"{pvd}: frames {sorted(frames)} not 0..n-1")
+    left = [p.name for p in vtk_dir.iterdir() if p.suffix == ".writing"]
+    check(not left, f"{vtk_dir}: temporary files left: {left}")
+    listed = {f for parts in frames.values() for (_, f, _) in parts.values()} | {pvd.name}
+    check({p.name for p in vtk_dir.iterdir()} == listed, f"{vtk_dir}: files not listed in the collection")
+    series, last_time = [], -math.inf
+    for k in sorted(frames):
+        parts = {}
+        times = {t for (t, _, _) in frames[k].values()}
+        check(len(times) == 1, f"{pvd}: frame {k} has parts at different times {times}")
+        t = times.pop()
+        check(t >= last_time, f"{pvd}: time {t} of frame {k} before {last_time}")
+        last_time = t
+        for part, (_, file, _) in frames[k].items():
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(str(vtk_dir / file))
+            vtk_messages()
+            reader.Update()
+            reported = vtk_messages()
+            check(not reported and reader.GetOutput() is not None, f"{file}: VTK's reader reported: {reported}")
+            parts[part] = (t, reader.GetOutput(), vtk_dir / file)
+        series.append(parts)
+    return series
+
+
+def field(data, name):
+    array = data.GetFieldData().GetArray(name)
+    return array.GetValue(0) if array is not None else math.nan
+
+
+def cell_values(data, name):
+    array = data.GetCellData().GetArray(name)
+    if array is None:
+        return None
+    return [array.GetValue(i) for i in range(array.GetNumberOfTuples())]
+
+
+def summary(result_dir):
+    return json.loads((Path(result_dir) / "summary.json").read_text())
+
+
+def check_ring(softgrain, work):
+    """spd.ring_compression with unloading: a frame per recorded load step."""
+    out = work / "ring"
+    nodes = 24
+    _, seconds = run(softgrain, out, "spd.ring_compression", "--vtk", "--set", f"nodes={nodes}",
+                     "strain_max=0.1", "strain_step=0.025", "unload=true")
+    _, plain = run(softgrain, work / "ring-plain", "spd.ring_compression", "--set", f"nodes={nodes}",
+                   "strain_max=0.1", "strain_step=0.025", "unload=true")
+    result = out / "spd.ring_compression"
+    rows = table(result / "compression.dat")
+    series = read_series(result, "spd.ring_compression")
+    check(len(series) == len(rows) == 9, f"ring: {len(series)} frames for {len(rows)} table rows (9 expected)")
+    check(summary(result).get("vtk_frames") == len(series), "ring: summary vtk_frames")
+    top_forces = []
+    for k, (frame, row) in enumerate(zip(series, rows)):
+        t, particles, _ = frame["particles"]
+        _, walls, _ = frame["walls"]
+        _, contacts, _ = frame["contacts"]
+        check(t == k, f"ring frame {k}: time {t}, expected the load step {k}")
+        # The top wall's force from the contact lines: minus the vertex force where the wall is the element,
+        # plus it where a wall vertex is the contacting one (contact_force_on in lib/spd/shell_model.hpp).
+        top = cell_values(walls, "wall_id")[1]
+        mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+        force = contacts.GetCellData().GetArray("force")
+        top_forces.append(sum((-1 if other[c] == top else 1 if mine[c] == top else 0) * force.GetTuple3(c)[1]
+                              for c in range(contacts.GetNumberOfLines())))
+        check(contacts.GetNumberOfLines() == contacts.GetNumberOfCells() and (row["F_over_Fstar"] <= 0 or mine),
+              f"ring frame {k}: {contacts.GetNumberOfLines()} contact lines at F/F* = {row['F_over_Fstar']}")
+        check(particles.GetNumberOfPoints() == nodes and particles.GetNumberOfPolys() == 1,
+              f"ring frame {k}: {particles.GetNumberOfPoints()} points, {particles.GetNumberOfPolys()} polygons")
+        check(walls.GetNumberOfLines() == 2, f"ring frame {k}: {walls.GetNumberOfLines()} wall lines")
+        for name in ("velocity", "force", "contact_force", "hinge_torque", "plastic_ratio"):
+            check(particles.GetPointData().GetArray(name) is not None, f"ring: point array {name} missing")
+        ratio = cell_values(particles, "area_ratio")
+        check(ratio is not None and close(ratio[0], row["V_over_V0"], 1e-10),
+              f"ring frame {k}: area_ratio {ratio} against V/V0 = {row['V_over_V0']}")
+        check(close(field(particles, "strain"), row["eps"], 1e-10),
+              f"ring frame {k}: strain {field(particles, 'strain')} against eps = {row['eps']}")
+    # Wall force over its largest value, from the contacts and from the table's F/F*.
+    table_forces = [row["F_over_Fstar"] for row in rows]
+    biggest = max(range(len(rows)), key=lambda k: table_forces[k])
+    for k in range(len(rows)):
+        check(close(top_forces[k] / top_forces[biggest], table_forces[k] / table_forces[biggest], 1e-9),
+              f"ring frame {k}: top-wall force from the contacts {top_forces[k]} against F/F* {table_forces[k]}")
+    size = sum(p.stat().st_size for p in (result / "vtk").iterdir())
+    print(f"ring: {len(series)} frames, {size} bytes, {seconds:.2f} s with --vtk, {plain:.2f} s without")
+
+
+def check_compaction(softgrain, work):
+    """spd.compaction, every 5th recorded state, and a kill -9 + --resume that continues the series."""
+    options = ["--set", "particles=6", "nodes=12", "strain_max=0.05", "--vtk", "--vtk-every", "5"]
+    out = work / "compaction"
+    _, seconds = run(softgrain, out, "spd.compaction", *options, "--checkpoint-every", "0")
+    result = out / "spd.compaction"
+    rows = table(result / "compaction.dat")
+    series = read_series(result, "spd.compaction")
+    expected = (len(rows) + 4) // 5
+    check(len(series) == expected, f"compaction: {len(series)} frames for {len(rows)} records every 5th")
+    s = summary(result)
+    check(s.get("vtk_frames") == len(series), "compaction: summary vtk_frames")
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        _, walls, _ = frame["walls"]
+        row = rows[5 * k]
+        check(particles.GetNumberOfPolys() == 6 and particles.GetNumberOfPoints() == 6 * 12,
+              f"compaction frame {k}: {particles.GetNumberOfPolys()} polygons, "
+              f"{particles.GetNumberOfPoints()} points")
+        check(walls.GetNumberOfLines() == 4, f"compaction frame {k}: {walls.GetNumberOfLines()} walls")
+        check(close(field(particles, "strain"), row["eps"], 1e-10),
+              f"compaction frame {k}: strain {field(particles, 'strain')} against eps {row['eps']}")
+        # H_over_R is H over the mean radius R = 1 m of the scene (ring radius, lib/spd/assembly.hpp).
+        check(close(field(particles, "height"), row["H_over_R"], 1e-10),
+              f"compaction frame {k}: height {field(particles, 'height')} against H/R {row['H_over_R']}")
+        check((k == 0) == (t == 0), f"compaction frame {k}: time {t} (0 only at the first contact)")
+        ids = cell_values(particles, "particle_id")
+        check(ids is not None and len(set(ids)) == 6, f"compaction frame {k}: particle ids {ids}")
+    check_resume(softgrain, work, options, series)
+    return seconds
+
+
+def check_resume(softgrain, work, options, reference):
+    """Stops a run with kill -9 once a checkpoint and some frames exist, resumes it, and compares."""
+    out = work / "resumed"
+    command = [softgrain, "run", "spd.compaction", "--out", str(out), "--quiet", *options,
+               "--checkpoint-every", "0.2"]
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    frames_dir = out / ".spd.compaction.vtk-frames"
+    checkpoint = out / "spd.compaction.checkpoint"
+    deadline = time.monotonic() + 60
+    second = frames_dir / "particles_000001.vtp"
+    while time.monotonic() < deadline and process.poll() is None:
+        # A checkpoint written after the second frame: it lists frames that the resumed run must keep.
+        try:
+            if checkpoint.stat().st_mtime_ns > second.stat().st_mtime_ns:
+                break
+        except FileNotFoundError:
+            pass
+        time.sleep(0.01)
+    if process.poll() is not None:
+        check(False, "resume: the run ended before a checkpoint and two frames existed; make it longer")
+        return
+    process.send_signal(signal.SIGKILL)
+    process.wait()
+    stopped_frames = len(list(frames_dir.glob("particles_*.vtp")))
+    before = {p.name: p.stat().st_ino for p in frames_dir.glob("*.vtp")}
+    run(softgrain, out, "spd.compaction", *options, "--checkpoint-every", "0.2", "--resume")
+    result = out / "spd.compaction"
+    s = summary(result)
+    check(s.get("resumed_from_checkpoint") is True, "resume: the run did not resume from the checkpoint")
+    check(not frames_dir.exists(), f"resume: {frames_dir} left after the run completed")
+    series = read_series(result, "spd.compaction")
+    check(len(series) == len(reference), f"resume: {len(series)} frames, uninterrupted {len(reference)}")
+    for k, (a, b) in enumerate(zip(series, reference)):
+        for part in ("particles", "walls"):
+            check(a[part][0] == b[part][0], f"resume frame {k}: time {a[part][0]} against {b[part][0]}")
+            check(a[part][2].read_bytes() == b[part][2].read_bytes(),
+                  f"resume frame {k}: {a[part][2].name} differs from the uninterrupted run's")
+    # The frames the checkpoint lists are the files written before the stop (the same inodes, moved into the
+    # result), not written again.
+    kept = [name for name, inode in before.items() if (result / "vtk" / name).exists()
+            and (result / "vtk" / name).stat().st_ino == inode]
+    check("particles_000000.vtp" in kept and "particles_000001.vtp" in kept,
+          f"resume: the frames before the checkpoint were written again (kept: {sorted(kept)})")
+    kept_frames = sum(1 for name in kept if name.startswith("particles_"))
+    print(f"compaction resume: killed with {stopped_frames} frames on disk, {kept_frames} kept from before "
+          f"the stop, resumed to {len(series)} frames, identical to the uninterrupted run")
+
+
+def check_compress2d(softgrain, work):
+    for model, extra in (("shell", ["nodes=16"]), ("spring_network", ["network_nodes=40"])):
+        out = work / f"compress2d-{model}"
+        run(softgrain, out, "dpm.compress2d", "--vtk", "--set", f"model={model}", "steps=4", *extra)
+        result = out / "dpm.compress2d"
+        rows = table(result / "force.dat")
+        series = read_series(result, "dpm.compress2d")
+        check(len(series) == len(rows) == 4, f"compress2d {model}: {len(series)} frames for {len(rows)} rows")
+        for k, (frame, row) in enumerate(zip(series, rows)):
+            t, body, _ = frame["particles"]
+            _, plates, _ = frame["plates"]
+            check(close(t, row["delta"], 1e-10), f"compress2d {model} frame {k}: time {t}, delta {row['delta']}")
+            check(close(field(body, "force"), row["F"], 1e-10), f"compress2d {model} frame {k}: force")
+            check(plates.GetNumberOfLines() == 2, f"compress2d {model} frame {k}: plates")
+            radius = body.GetPointData().GetArray("radius")
+            check(radius is not None and radius.GetValue(0) == 0.5, f"compress2d {model}: radius sigma/2")
+            if model == "shell":
+                check(body.GetNumberOfPoints() == 16 and body.GetNumberOfPolys() == 1,
+                      f"compress2d shell frame {k}: {body.GetNumberOfPoints()} points")
+            else:
+                check(body.GetNumberOfVerts() == body.GetNumberOfPoints() and body.GetNumberOfLines() > 0,
+                      f"compress2d network frame {k}: {body.GetNumberOfVerts()} nodes, "
+                      f"{body.GetNumberOfLines()} springs")
+                s = summary(result)
+                check(body.GetNumberOfLines() == s["network_springs"], "compress2d network: springs")
+
+
+def check_jam(softgrain, work):
+    out = work / "jam"
+    particles = 6
+    run(softgrain, out, "dpm.jam", "--vtk", "--set", "model=shell", f"particles={particles}", "nodes_small=6",
+        "nodes_large=8", "pressures=2", "decompress=true")
+    result = out / "dpm.jam"
+    rows = table(result / "pressure.dat")
+    series = read_series(result, "dpm.jam")
+    check(len(series) == len(rows) == summary(result)["states"], f"jam: {len(series)} frames, {len(rows)} rows")
+    for k, (frame, row) in enumerate(zip(series, rows)):
+        t, data, _ = frame["particles"]
+        _, box, _ = frame["box"]
+        check(t == k, f"jam frame {k}: time {t}")
+        check(data.GetNumberOfPolys() == particles and data.GetNumberOfPoints() == 3 * 6 + 3 * 8,
+              f"jam frame {k}: {data.GetNumberOfPolys()} polygons, {data.GetNumberOfPoints()} points")
+        check(close(field(data, "phi"), row["phi"], 1e-10), f"jam frame {k}: phi")
+        check(close(field(data, "pressure"), row["P"], 1e-10), f"jam frame {k}: P")
+        ratio = cell_values(data, "area_ratio")
+        check(ratio is not None and all(0.5 < r < 1.5 for r in ratio), f"jam frame {k}: area ratios {ratio}")
+        check(box.GetNumberOfLines() == 1, f"jam frame {k}: box outline")
+
+
+def check_tissue(softgrain, work):
+    """spd.tissue: every 20th record, the cells with W/W0 and the cohesive links."""
+    out = work / "tissue"
+    run(softgrain, out, "spd.tissue", "--vtk", "--checkpoint-every", "0", "--set", "columns=5", "rows=5",
+        "pull_rate=2e-5", "strain_max=0.1")
+    result = out / "spd.tissue"
+    rows = table(result / "tissue.dat")
+    series = read_series(result, "spd.tissue")
+    s = summary(result)
+    check(len(series) == (len(rows) + 19) // 20, f"tissue: {len(series)} frames for {len(rows)} records")
+    for k, frame in enumerate(series):
+        _, cells, _ = frame["particles"]
+        _, links, _ = frame["links"]
+        row = rows[20 * k]
+        check(cells.GetNumberOfPolys() == s["cells"] and cells.GetNumberOfPoints() == s["vertices"]
+              and links.GetNumberOfLines() == s["links"],
+              f"tissue frame {k}: {cells.GetNumberOfPolys()} cells, {cells.GetNumberOfPoints()} vertices, "
+              f"{links.GetNumberOfLines()} links; summary {s['cells']}, {s['vertices']}, {s['links']}")
+        check(close(field(cells, "strain"), row["eps_h"], 1e-10),
+              f"tissue frame {k}: strain {field(cells, 'strain')} against eps_h {row['eps_h']}")
+        broken = cell_values(links, "broken")
+        check(broken is not None and len(broken) == links.GetNumberOfLines() > 0
+              and sum(broken) == field(cells, "broken_links"), f"tissue frame {k}: links")
+        check(cell_values(cells, "W_over_W0") is not None, f"tissue frame {k}: W_over_W0 missing")
+        check(frame["contacts"][1].GetCellData().GetArray("normal_force") is not None,
+              f"tissue frame {k}: contacts without normal_force")
+
+
+def check_slump(softgrain, work):
+    """dpm.slump, a dynamic scene: a frame every 5000 time steps of both stages."""
+    out = work / "slump"
+    run(softgrain, out, "dpm.slump", "--vtk", "--vtk-every", "5000", "--set", "particles=4", "box_width=2",
+        "nodes_small=8", "nodes_large=10")
+    result = out / "dpm.slump"
+    s = summary(result)
+    series = read_series(result, "dpm.slump")
+    check(len(series) == s["steps"] // 5000 + 1, f"slump: {len(series)} frames for {s['steps']} steps")
+    released = 0
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        _, walls, _ = frame["walls"]
+        check(close(t, 5000 * k * s["dt"], 1e-12), f"slump frame {k}: time {t}, expected {5000 * k} dt")
+        check(field(particles, "step") == 5000 * k, f"slump frame {k}: step {field(particles, 'step')}")
+        check(particles.GetNumberOfPolys() == 4 and particles.GetNumberOfPoints() == 2 * 8 + 2 * 10,
+              f"slump frame {k}: {particles.GetNumberOfPolys()} polygons, {particles.GetNumberOfPoints()} points")
+        check(particles.GetPointData().GetArray("velocity") is not None, f"slump frame {k}: no velocity")
+        gone = field(particles, "released") == 1
+        released += gone
+        check(walls.GetNumberOfLines() == (2 if gone else 3), f"slump frame {k}: {walls.GetNumberOfLines()} walls")
+    check(0 < released < len(series), f"slump: {released} of {len(series)} frames after the release")
+
+
+def check_refusals(softgrain, work):
+    for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
+                           (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
+                           (["--vtk"], ["--vtk", "core.harmonic", "allowed for", "spd.compaction"])):
+        done, _ = run(softgrain, work / "refused", "core.harmonic", *options, expect=2)
+        check(all(w in done.stderr for w in words), f"{options}: message {done.stderr.strip()!r} lacks {words}")
+    check(not (work / "refused").exists() or not any((work / "refused").iterdir()),
+          "a refused run left files behind")
+
+
+def main():
+    if len(sys.argv) not in (2, 3):
+        print(__doc__, file=sys.stderr)
+        return 2
+    if vtkXMLPolyDataReader is None:
+        print("vtk_readback: VTK's Python module is missing (scripts/install-deps --vtk; run with "
+              "/usr/bin/python3): skipped", file=sys.stderr)
+        return SKIP
+    global messages
+    messages = vtkStringOutputWindow()
+    vtkOutputWindow.SetInstance(messages)
+    softgrain = sys.argv[1]
+    work = Path(sys.argv[2]) if len(sys.argv) == 3 else Path(tempfile.mkdtemp(prefix="softgrain-vtk-"))
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    check_refusals(softgrain, work)
+    check_ring(softgrain, work)
+    check_compaction(softgrain, work)
+    check_tissue(softgrain, work)
+    check_compress2d(softgrain, work)
+    check_slump(softgrain, work)
+    check_jam(softgrain, work)
+    if failures:
+        print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
+        return 1
+    if len(sys.argv) == 2:
+        shutil.rmtree(work, ignore_errors=True)
+    print("vtk_readback: all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
