@@ -228,6 +228,7 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
 RunContext::~RunContext()
 {
     keep_on_signal(partial_dir_);
+    if (!vtk_frames_dir_.empty()) keep_on_signal(vtk_frames_dir_);
     if (committed_) return;
     std::error_code ignored;
     tables_.clear();
@@ -247,10 +248,18 @@ void RunContext::enable_vtk(std::optional<std::int64_t> every)
     // The frames directory is this run's: it holds the checkpoint's lock. Frames of an earlier run that
     // left no checkpoint to resume are removed; those of a resumed one are trimmed to the checkpoint's.
     vtk_frames_dir_ = vtk_frames_directory(final_dir_);
-    if (!checkpoints_->will_resume()) fs::remove_all(vtk_frames_dir_);
+    if (!checkpoints_->will_resume()) {
+        fs::remove_all(vtk_frames_dir_);
+        // Until a checkpoint records them, a signal leaves nothing for --resume to continue: the frames go.
+        remove_on_signal(vtk_frames_dir_);
+    }
     vtk_ = std::make_unique<vtk::Series>(vtk_frames_dir_, name, every);
-    checkpoints_->attach([this] { return vtk_->state(); },
-                         [this](const std::string& state) { vtk_->restore(state); });
+    checkpoints_->attach(
+        [this] {
+            keep_on_signal(vtk_frames_dir_); // this checkpoint records them: they stay for --resume
+            return vtk_->state();
+        },
+        [this](const std::string& state) { vtk_->restore(state); });
 }
 
 Table& RunContext::table(const std::string& file_name, const std::vector<Column>& columns)

@@ -259,6 +259,22 @@ TEST_CASE("a run stopped by SIGTERM or SIGHUP removes its partial directory and 
     for (const auto& entry : fs::directory_iterator(dir))
         CHECK(entry.path().filename() == "spd.compaction.checkpoint");
     fs::remove(dir / "spd.compaction.checkpoint");
+    // With --vtk the frames of a checkpointing run wait beside the checkpoint for --resume; stopped before
+    // its first checkpoint (every 600 s) it has none, so its frames go too.
+    const Outcome framing = softgrain::verification::run_shell(
+        std::string(SOFTGRAIN_EXECUTABLE) + " run spd.compaction --quiet --vtk --out " + dir.string() +
+        " & p=$!; sleep 1.5; kill -TERM $p; wait $p; echo exit=$?");
+    CHECK(contains(framing.output, "exit=143"));
+    CHECK(fs::is_empty(dir));
+    const Outcome framing_checkpointed = softgrain::verification::run_shell(
+        std::string(SOFTGRAIN_EXECUTABLE) +
+        " run spd.compaction --quiet --vtk --checkpoint-every 0.1 --out " + dir.string() +
+        " & p=$!; sleep 1.5; kill -TERM $p; wait $p; echo exit=$?");
+    CHECK(contains(framing_checkpointed.output, "exit=143"));
+    CHECK(fs::exists(dir / "spd.compaction.checkpoint"));
+    CHECK(fs::exists(dir / ".spd.compaction.vtk-frames"));
+    fs::remove(dir / "spd.compaction.checkpoint");
+    fs::remove_all(dir / ".spd.compaction.vtk-frames");
     // A partial directory whose process is gone (a SIGKILL): removed by the next run into the same place.
     fs::create_directories(dir / ".core.harmonic.partial-2147483000");
     REQUIRE(run_softgrain("run core.harmonic --quiet --out " + dir.string()).exit_code == 0);
