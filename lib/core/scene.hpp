@@ -30,7 +30,7 @@ struct Scene
     // small size).
     std::function<MemoryEstimate(const Parameters&)> memory = nullptr;
     // The work-precision sweep of its methods and resolutions that `softgrain advise` reads (absent: none).
-    std::optional<SweepTable> sweep;
+    std::optional<SweepTable> sweep = std::nullopt;
     // The scene writes ParaView frames with `run --vtk` (RunContext::vtk).
     bool vtk = false;
 

@@ -53,14 +53,28 @@ int free_particle_zero_modes(ShapeModel model, int vertices, int dimension)
     return dimension == 2 ? vertices - 1 : vertices + 3;
 }
 
-std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x)
+std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x, double force_resolution)
 {
     Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(x.size());
     total_energy(system, x, &contact_forces, nullptr, interaction_part);
     std::vector<bool> out;
-    for (const Particle& q : system.particles)
-        out.push_back(contact_forces.segment(2 * q.first, 2 * q.count).isZero(0.0));
+    for (const Particle& q : system.particles) {
+        const double largest = contact_forces.segment(2 * q.first, 2 * q.count).cwiseAbs().maxCoeff();
+        out.push_back(largest <= q.count * force_resolution);
+    }
     return out;
+}
+
+int zero_modes_beyond_rattlers(const DpmSystem& system, const Eigen::MatrixXd& zero_modes,
+                               const std::vector<bool>& rattling)
+{
+    if (zero_modes.cols() == 0) return 0;
+    Eigen::MatrixXd off_rattlers = zero_modes;
+    for (std::size_t q = 0; q < system.particles.size(); ++q)
+        if (rattling[q])
+            off_rattlers.middleRows(2 * system.particles[q].first, 2 * system.particles[q].count).setZero();
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(off_rattlers);
+    return static_cast<int>((svd.singularValues().array() > 1e-4).count());
 }
 
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options)

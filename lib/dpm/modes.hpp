@@ -54,8 +54,24 @@ double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold)
 // N_dof - N_f - 1 = N + 3 (Fig. 9.15a); an elastic shell or a surface-tension particle its rigid motions,
 // 3 in 2D and 6 in 3D. A rattler of a packing keeps these.
 int free_particle_zero_modes(ShapeModel model, int vertices, int dimension);
-// Rattlers of a packing: the particles on which no contact force acts (exactly zero).
-std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x);
+// Rattlers of a packing at an equilibrium resolved to `force_resolution` (its largest unbalanced force
+// component, e.g. what polish_for_modes returns): the particles on which no contact force component exceeds
+// N_mu force_resolution, N_mu the particle's vertex count. A particle held by a single contact is one,
+// however small its overlap: its shape forces sum to zero, so that contact's force equals minus the sum of
+// the unbalanced forces on its N_mu vertices, at most N_mu force_resolution per component (decision
+// dpm-zero-mode-count). A particle without contacts is one too.
+std::vector<bool> rattlers(const DpmSystem& system, const Eigen::VectorXd& x, double force_resolution);
+
+// Zero modes of a packing that are not motions of its rattlers alone: the rank of the zero eigenvectors
+// (orthonormal columns of zero_modes) restricted to the coordinates of the other particles, i.e.
+// dim Z - dim(Z and the rattlers' coordinate subspace). A rattler's own zero modes (3 rigid motions when
+// free, 2 when a contact of vanishing force but full stiffness holds it, a floppy rattler's shape modes)
+// vanish there up to the error of the computed subspace, eps ||M|| / gap (Davis-Kahan; 1e-11 on the
+// packings of Fig. 9.14b), while a mode that moves the other particles keeps at least sqrt(n_B / n) of its
+// norm there (the uniform translations; n_B of the n coordinates off the rattlers), above 0.3 while the
+// rattlers hold less than 90 % of the vertices. Singular values above 1e-4 count, decades from both.
+int zero_modes_beyond_rattlers(const DpmSystem& system, const Eigen::MatrixXd& zero_modes,
+                               const std::vector<bool>& rattling);
 
 // Participation ratio (sum_i |u_i|^2)^2 / (N sum_i |u_i|^4) of a mode over its N vertices: about 1 for a
 // plane wave (2/3 for a standing one), of order 1/N for a mode on a few vertices (Fig. 9.5b's quasi-localised

@@ -109,9 +109,14 @@ nlohmann::json median_or_null(std::vector<double> values)
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
 // keys common to single particles and packings. Zero modes: below zero_threshold, or below the round-off
 // bound where that is larger (zero_mode_threshold), in magnitude; below minus that, negative modes (a
-// saddle, decision dpm-packing-minimum). Returns the counts.
-SpectrumCounts write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
-                              double zero_threshold, RunContext& context)
+// saddle, decision dpm-packing-minimum). Returns the counts and the zero modes.
+struct WrittenSpectrum
+{
+    SpectrumCounts counts;
+    Eigen::MatrixXd zero_modes; // orthonormal columns
+};
+WrittenSpectrum write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
+                               double zero_threshold, RunContext& context)
 {
     const auto started = std::chrono::steady_clock::now();
     const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
@@ -188,7 +193,7 @@ SpectrumCounts write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x,
     s["energy"] = u0;
     s["zero_mode_exponent"] = median_or_null(zero_exponents);
     s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
-    return counts;
+    return {counts, modes.eigenvectors.middleCols(counts.negative, counts.zero)};
 }
 
 // A jammed packing (dpm.jam protocol) at the requested pressure and its spectrum (Fig. 9.14b).
@@ -212,23 +217,20 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     // A saddle FIRE stopped beside shows as negative modes (decision dpm-packing-minimum).
     const double zero_threshold = p.real("zero_threshold");
     const double force_max = polish_for_modes(r.system, r.x, r.pressure_unit);
-    const SpectrumCounts counts = write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, context);
+    const WrittenSpectrum spectrum = write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, context);
     if (o.model != "smooth_disk")
-        write_mode_parts(r.system, r.x, r.pressure_unit, counts.first_positive(), context);
-    // Rattlers: particles without any contact; each keeps the zero modes of a free particle (3 rigid
-    // motions; a floppy polygon N_mu - 1; a disk its 2 translations, for which the model is not used).
-    const ShapeModel model = o.model == "smooth_disk" ? ShapeModel::shell : shape_model_from_name(o.model);
-    const std::vector<bool> rattling = rattlers(r.system, r.x);
-    int rattler_zero_modes = 0;
-    for (std::size_t q = 0; q < rattling.size(); ++q)
-        if (rattling[q])
-            rattler_zero_modes += free_particle_zero_modes(model, r.system.particles[q].count, 2);
+        write_mode_parts(r.system, r.x, r.pressure_unit, spectrum.counts.first_positive(), context);
+    // Rattlers: particles whose contact forces cannot be told from zero at the polished equilibrium (also
+    // those held by one contact of vanishing force, which keep 2 of their 3 rigid motions as zero modes); the
+    // zero modes that move only rattlers are not the packing's own (decision dpm-zero-mode-count).
+    const std::vector<bool> rattling = rattlers(r.system, r.x, force_max);
+    const int beyond_rattlers = zero_modes_beyond_rattlers(r.system, spectrum.zero_modes, rattling);
     auto& s = context.summary();
     s["rattlers"] = std::count(rattling.begin(), rattling.end(), true);
-    s["rattler_zero_modes"] = rattler_zero_modes;
+    s["rattler_zero_modes"] = spectrum.counts.zero - beyond_rattlers;
     s["jam_seconds"] = jam_seconds;
     s["fire_iterations"] = r.fire_iterations;
-    s["zero_modes_without_rattlers"] = counts.zero - rattler_zero_modes;
+    s["zero_modes_without_rattlers"] = beyond_rattlers;
     s["force_max"] = force_max; // after the polish, k_c sigma (k_c = sigma = 1 in dpm.jam)
     s["pressure_reached"] = pressure(stress_tensor(r.system, r.x)) / r.pressure_unit;
     s["phi"] = packing_fraction(r.system, r.x);
@@ -263,7 +265,7 @@ void run_modes(const Parameters& p, RunContext& context)
     const double force = particle.force_max;
     context.count_steps(particle.fire_iterations);
 
-    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context).zero;
+    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context).counts.zero;
     auto& s = context.summary();
     s["zero_modes_nontrivial"] = zero - 3;
     s["A0_used"] = A0;

@@ -6,7 +6,8 @@
 // P = 1e-5 k_a a0 (N = 16 and 12 small and large hexagons/decagons): straight from FIRE their rattlers carry
 // forces of 1e-10, which lift rattler rotations to 1e-11 and -1e-9 k_a a0 (the count then read 4 and, with
 // a negative eigenvalue counted, 5), and a particle held by one contact of vanishing force was not yet a
-// rattler.
+// rattler. Rattlers are now the particles whose contact forces are round-off (rattlers), and the packing's
+// own zero modes those that move more than its rattlers (zero_modes_beyond_rattlers).
 #include "dpm/jam.hpp"
 #include "dpm/modes.hpp"
 #include "support/tolerance.hpp"
@@ -37,22 +38,21 @@ TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rat
         o.pressures = 0;
         o.seed = c.seed;
         JamResult r = jam(o);
-        polish_for_modes(r.system, r.x, r.pressure_unit);
+        const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
         const ModeSpectrum modes = vibrational_modes(r.system, r.x);
         const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;
         const double threshold = zero_mode_threshold(lambda, 1e-13);
         const int zero = count_zero_modes(lambda, threshold);
-        const std::vector<bool> rattling = rattlers(r.system, r.x);
-        int rattler_modes = 0;
-        for (std::size_t q = 0; q < rattling.size(); ++q)
-            if (rattling[q])
-                rattler_modes +=
-                    free_particle_zero_modes(ShapeModel::surface_tension, r.system.particles[q].count, 2);
-        MESSAGE("zero modes " << zero << ", rattlers " << std::count(rattling.begin(), rattling.end(), true)
-                              << ", largest |zero| " << lambda.head(zero).cwiseAbs().maxCoeff()
-                              << ", smallest non-zero " << lambda(zero) << ", threshold " << threshold);
-        CHECK(rattler_modes > 0); // the cases are chosen to have rattlers
-        CHECK(zero == 2 + rattler_modes);
+        const std::vector<bool> rattling = rattlers(r.system, r.x, force);
+        const Eigen::MatrixXd zero_space = modes.eigenvectors.leftCols(zero);
+        const int rattler_count = static_cast<int>(std::count(rattling.begin(), rattling.end(), true));
+        MESSAGE("zero modes " << zero << ", rattlers " << rattler_count << ", largest |zero| "
+                              << lambda.head(zero).cwiseAbs().maxCoeff() << ", smallest non-zero "
+                              << lambda(zero) << ", threshold " << threshold);
+        CHECK(rattler_count > 0); // the cases are chosen to have rattlers
+        CHECK(zero_modes_beyond_rattlers(r.system, zero_space, rattling) == 2);
+        // These rattlers touch nothing, so each keeps the 3 rigid motions of a free particle (Fig. 9.14a).
+        CHECK(zero == 2 + 3 * rattler_count);
         // A minimum: no eigenvalue below minus the threshold (an unbalanced rattler's rotation can be
         // negative). The count does not depend on where the threshold sits: the paper's 1e-13 gives the same
         // (the zero modes are at ~1e-15, below both), and the softest non-zero mode, a contact mode of
@@ -62,7 +62,6 @@ TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rat
         CHECK(lambda(zero) > 1e-6);
         // The uniform translations lie in the zero-mode eigenspace: |P t|^2 = 1 - sin^2 theta with
         // sin theta <= |M t| / gap (Davis-Kahan), |M t| ~ eps |M| ~ 1e-15 against a gap of ~1e-4.
-        const Eigen::MatrixXd zero_space = modes.eigenvectors.leftCols(zero);
         for (int axis : {0, 1}) {
             Eigen::VectorXd t = Eigen::VectorXd::Zero(r.x.size());
             for (Eigen::Index v = 0; v < t.size() / 2; ++v)
@@ -71,4 +70,44 @@ TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rat
             CHECK_CLOSE((zero_space.transpose() * t).squaredNorm(), 1.0, (Tolerance{0, 1e-12}));
         }
     }
+}
+
+TEST_CASE("rattlers held by a contact of vanishing force keep 2 rigid motions each; the packing's own zero "
+          "modes stay the 2 translations [DPM sec. 9.4.3, Fig. 9.14b; decision dpm-zero-mode-count]")
+{
+    // 8 elastic shells (4 hexagons, 4 decagons) jammed at P = 1e-7 k_a a0, seed 11: two particles touch only
+    // each other, through one vertex pair whose force is round-off (force balance on each of the two leaves
+    // it none) but whose stiffness is the full k_c (a harmonic contact's curvature does not vanish with its
+    // overlap). The pair has 2 x 3 rigid motions less the one that contact fixes: 5 zero modes, with the
+    // 2 translations of the periodic packing 7. Subtracting a free particle's 3 per rattler would read 1.
+    JamOptions o;
+    o.model = "shell";
+    o.particles = 8;
+    o.nodes_small = 6;
+    o.nodes_large = 10;
+    o.pressure_onset = o.pressure_max = 1e-7;
+    o.pressures = 0;
+    o.seed = 11;
+    JamResult r = jam(o);
+    const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
+    const ModeSpectrum modes = vibrational_modes(r.system, r.x);
+    const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;
+    const int zero = count_zero_modes(lambda, zero_mode_threshold(lambda, 1e-13));
+    const std::vector<bool> rattling = rattlers(r.system, r.x, force);
+
+    // The case still holds what it tests: rattlers that touch something (a non-zero contact force).
+    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
+    total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);
+    int touching_rattlers = 0;
+    for (std::size_t q = 0; q < rattling.size(); ++q) {
+        const Particle& p = r.system.particles[q];
+        if (rattling[q] && !contact_forces.segment(2 * p.first, 2 * p.count).isZero(0.0)) ++touching_rattlers;
+    }
+    MESSAGE("largest force after the polish " << force << ", zero modes " << zero << ", rattlers "
+                                              << std::count(rattling.begin(), rattling.end(), true));
+    REQUIRE(touching_rattlers == 2);
+    CHECK(std::count(rattling.begin(), rattling.end(), true) == 2);
+    CHECK(lambda(0) > -zero_mode_threshold(lambda, 1e-13)); // a minimum
+    CHECK(zero == 7);
+    CHECK(zero_modes_beyond_rattlers(r.system, modes.eigenvectors.leftCols(zero), rattling) == 2);
 }
