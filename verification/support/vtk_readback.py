@@ -14,6 +14,10 @@ run's tables and summary:
     the contact lines with F/F* (relative to its largest), the strain with eps, the
     compaction's strain and height with eps and H, the tissue's strain with eps_h and its broken links with
     the links' broken flags, the shell's delta/D with delta, jam's phi with phi;
+  - VSM: vsm.punch (every time step), vsm.swinging_cube and vsm.lblock (every 20th step): volume_ratio =
+    det F, pressure = -tr(sigma)/3, the Voronoi volumes sum to the domain's, the punch wall at y = 0.5 - v t,
+    the frames at the punch's snapshot steps equal snapshots.dat (positions, pressure), the L-block's
+    momentum sum rho V v equals momentum.dat;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -372,6 +376,141 @@ def check_slump(softgrain, work):
     check(0 < released < len(series), f"slump: {released} of {len(series)} frames after the release")
 
 
+def point_tuples(data, name):
+    """The point array `name` as a list of tuples (None if absent)."""
+    array = data.GetPointData().GetArray(name)
+    if array is None:
+        return None
+    return [array.GetTuple(i) for i in range(array.GetNumberOfTuples())]
+
+
+def det3(F):
+    return (F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6])
+            + F[2] * (F[3] * F[7] - F[4] * F[6]))
+
+
+def check_vsm_particles(data, label, particles, volume):
+    """A VSM particles part: one vertex cell per particle, F with 9 components, volume_ratio = det F,
+    pressure = -tr(sigma)/3, and the Voronoi cells tiling the domain."""
+    check(data.GetNumberOfPoints() == particles and data.GetNumberOfVerts() == particles,
+          f"{label}: {data.GetNumberOfPoints()} points, {data.GetNumberOfVerts()} vertex cells for {particles}")
+    F = data.GetPointData().GetArray("deformation_gradient")
+    sigma = data.GetPointData().GetArray("cauchy_stress")
+    if not check(F is not None and F.GetNumberOfComponents() == 9 and sigma is not None
+                 and sigma.GetNumberOfComponents() == 9, f"{label}: F or sigma missing or not 9 components"):
+        return
+    J, p, V = (point_tuples(data, n) for n in ("volume_ratio", "pressure", "voronoi_volume"))
+    for name in ("displacement", "velocity", "von_mises"):
+        check(data.GetPointData().GetArray(name) is not None, f"{label}: point array {name} missing")
+    scale = max(abs(q[0]) for q in p) or 1.0
+    for a in range(particles):
+        f, s = F.GetTuple(a), sigma.GetTuple(a)
+        check(close(J[a][0], det3(f), 1e-12), f"{label}: particle {a} volume_ratio {J[a][0]}, det F {det3(f)}")
+        check(abs(p[a][0] + (s[0] + s[4] + s[8]) / 3) <= 1e-12 * scale,
+              f"{label}: particle {a} pressure {p[a][0]} against -tr(sigma)/3")
+    check(close(sum(v[0] for v in V), volume, 1e-9), f"{label}: Voronoi volumes sum to {sum(v[0] for v in V)}, "
+          f"domain {volume}")
+    ids = cell_values(data, "particle_id")
+    check(ids == list(range(particles)), f"{label}: particle ids")
+
+
+def check_vsm(softgrain, work):
+    """vsm.punch every time step (the frames at the snapshot steps against snapshots.dat), vsm.swinging_cube
+    and vsm.lblock with their cadence."""
+    out = work / "punch"
+    run(softgrain, out, "vsm.punch", "--vtk", "--vtk-every", "1", "--set", "per_side=2", "layers=2",
+        "final_strain=0.02")
+    result = out / "vsm.punch"
+    s = summary(result)
+    series = read_series(result, "vsm.punch")
+    check(len(series) == s["steps"] + 1, f"punch: {len(series)} frames for {s['steps']} steps")
+    rows = table(result / "snapshots.dat")
+    n, dt, velocity, height = s["particles"], s["dt"], 0.1, 0.5
+    check(n == 3 * 2 * 2 and len(rows) == 2 * n, f"punch: {n} particles, {len(rows)} snapshot rows")
+    snapshot_strains = sorted({r["strain"] for r in rows})
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        _, walls, _ = frame["walls"]
+        check(close(t, k * dt, 1e-9), f"punch frame {k}: time {t}, expected {k} dt")
+        check(field(particles, "step") == k, f"punch frame {k}: step {field(particles, 'step')}")
+        check(close(field(particles, "strain"), velocity * t / height, 1e-12), f"punch frame {k}: strain")
+        check_vsm_particles(particles, f"punch frame {k}", n, 1.0 * 0.5 * 0.1)
+        # The walls: the five symmetric faces (kind 2) and the punch (label 6, kind 1) at y = 0.5 - v t.
+        labels, kinds = cell_values(walls, "face_label"), cell_values(walls, "boundary_kind")
+        check(walls.GetNumberOfPolys() == 6 and sorted(kinds) == [1, 2, 2, 2, 2, 2],
+              f"punch frame {k}: walls {labels} of kinds {kinds}")
+        punch = labels.index(6) if 6 in labels else None
+        if punch is not None:
+            ys = {round(walls.GetPoint(walls.GetCell(punch).GetPointId(c))[1], 14) for c in range(4)}
+            check(len(ys) == 1 and close(ys.pop(), height - velocity * t, 1e-12),
+                  f"punch frame {k}: the punch is not at y = 0.5 - v t")
+    # The state at each snapshot: the first step with t + dt/2 >= strain height / v.
+    for strain in snapshot_strains:
+        k = next(k for k in range(len(series)) if series[k]["particles"][0] + 0.5 * dt >= strain * height / velocity)
+        data = series[k]["particles"][1]
+        expected = [r for r in rows if r["strain"] == strain]
+        pressure = point_tuples(data, "pressure")
+        scale = max(abs(r["pressure"]) for r in expected)
+        for a, r in enumerate(expected):
+            x = data.GetPoint(a)
+            check(all(abs(x[i] - r[f"x{i + 1}"]) <= 1e-10 for i in range(3)),
+                  f"punch strain {strain}: particle {a} at {x}, table {r}")
+            check(abs(pressure[a][0] - r["pressure"]) <= 1e-10 * scale,
+                  f"punch strain {strain}: particle {a} pressure {pressure[a][0]}, table {r['pressure']}")
+    print(f"vsm.punch: {len(series)} frames, snapshots at frames of strain {snapshot_strains} match")
+
+    out = work / "cube"
+    run(softgrain, out, "vsm.swinging_cube", "--vtk", "--set", "per_side=3", "end_time=1e-3")
+    result = out / "vsm.swinging_cube"
+    s = summary(result)
+    series = read_series(result, "vsm.swinging_cube")
+    check(len(series) == s["steps"] + 1, f"cube: {len(series)} frames for {s['steps']} steps")
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        check(close(t, k * s["dt"], 1e-9), f"cube frame {k}: time {t}")
+        check_vsm_particles(particles, f"cube frame {k}", 27, 1.0)
+        check(close(field(particles, "cos_omega_t"), math.cos(s["omega"] * t), 1e-12), f"cube frame {k}: cos")
+        _, walls, _ = frame["walls"]
+        kinds = cell_values(walls, "boundary_kind")
+        check(sorted(kinds) == [2, 2, 2, 3, 3, 3], f"cube frame {k}: wall kinds {kinds}")
+    # The last frame is the final state: its displacements against the summary's error need the exact field;
+    # the first frame's displacement is the initial one of eq. (53), not zero.
+    first = point_tuples(series[0]["particles"][1], "displacement")
+    check(max(abs(c) for d in first for c in d) > 1e-5, "cube frame 0: no initial displacement")
+
+    out = work / "lblock"
+    run(softgrain, out, "vsm.lblock", "--vtk", "--vtk-every", "20", "--set", "spacing=1", "end_time=6")
+    result = out / "vsm.lblock"
+    s = summary(result)
+    series = read_series(result, "vsm.lblock")
+    check(len(series) == s["steps"] // 20 + 1, f"lblock: {len(series)} frames for {s['steps']} steps every 20")
+    rows = table(result / "momentum.dat")
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        check(set(frame) == {"particles"}, f"lblock frame {k}: parts {sorted(frame)} (a free block: no walls)")
+        check(close(t, 20 * k * s["dt"], 1e-9), f"lblock frame {k}: time {t}")
+        check_vsm_particles(particles, f"lblock frame {k}", s["particles"], 117.0)
+        check(close(field(particles, "traction_pulse"), max(2.5 - abs(t - 2.5), 0.0), 1e-12),
+              f"lblock frame {k}: traction_pulse")
+    # Linear momentum sum m v from the frames' half-step velocities and the Voronoi volumes (m = rho V)
+    # against momentum.dat at the same times (rho = 1000 kg/m^3).
+    by_time = {round(r["t"], 9): r for r in rows}
+    matched = 0
+    for frame in series:
+        t, data, _ = frame["particles"]
+        r = by_time.get(round(t, 9))
+        if r is None:
+            continue
+        v, V = point_tuples(data, "velocity"), point_tuples(data, "voronoi_volume")
+        p = [sum(1000 * V[a][0] * v[a][i] for a in range(len(v))) for i in range(3)]
+        scale = max(abs(r["p1"]), abs(r["p2"]), abs(r["p3"]), 1e-300)
+        check(all(abs(p[i] - r[f"p{i + 1}"]) <= 1e-9 * scale for i in range(3)),
+              f"lblock t = {t}: momentum {p} against {r}")
+        matched += 1
+    check(matched >= 2, f"lblock: only {matched} frames at the times of momentum.dat")
+    print(f"vsm.swinging_cube and vsm.lblock: frames read back; lblock momentum matched at {matched} times")
+
+
 def check_refusals(softgrain, work):
     for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
                            (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
@@ -404,6 +543,7 @@ def main():
     check_compress2d(softgrain, work)
     check_slump(softgrain, work)
     check_jam(softgrain, work)
+    check_vsm(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
         return 1
