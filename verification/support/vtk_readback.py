@@ -18,6 +18,8 @@ run's tables and summary:
     det F, pressure = -tr(sigma)/3, the Voronoi volumes sum to the domain's, the punch wall at y = 0.5 - v t,
     the frames at the punch's snapshot steps equal snapshots.dat (positions, pressure), the L-block's
     momentum sum rho V v equals momentum.dat;
+  - SD: sd.many on a line and in a cluster: gaps and velocities equal many.dat, |X_ij| = 2R + h - 2 delta
+    (eq. 2);
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -511,6 +513,50 @@ def check_vsm(softgrain, work):
     print(f"vsm.swinging_cube and vsm.lblock: frames read back; lblock momentum matched at {matched} times")
 
 
+def check_sd(softgrain, work):
+    """sd.many on a line and in the triangle cluster: a frame per output sample, gaps and velocities against
+    many.dat."""
+    for geometry, n in (("line", 4), ("cluster", 3)):
+        out = work / f"sd-{geometry}"
+        run(softgrain, out, "sd.many", "--vtk", "--set", f"geometry={geometry}", f"particles={n}", "outputs=8")
+        result = out / "sd.many"
+        rows = table(result / "many.dat")
+        series = read_series(result, "sd.many")
+        s = summary(result)
+        bonds = s["bonds"]
+        dim = 1 if geometry == "line" else 2
+        force = 1e-3
+        check(len(series) == len(rows) and len(rows) > 2, f"sd {geometry}: {len(series)} frames, {len(rows)} rows")
+        for k, (frame, row) in enumerate(zip(series, rows)):
+            t, particles, _ = frame["particles"]
+            _, pairs, _ = frame["pairs"]
+            check(close(t, row["t"], 1e-10), f"sd {geometry} frame {k}: time {t} against t = {row['t']}")
+            check(particles.GetNumberOfVerts() == n and pairs.GetNumberOfVerts() == bonds,
+                  f"sd {geometry} frame {k}: {particles.GetNumberOfVerts()} particles, "
+                  f"{pairs.GetNumberOfVerts()} pairs")
+            gaps = point_tuples(pairs, "gap")
+            check(all(close(gaps[b][0], row[f"h_{b}"], 1e-10) for b in range(bonds)), f"sd {geometry} frame {k}: gaps")
+            check(close(field(particles, "gap_min"), min(g[0] for g in gaps), 1e-15),
+                  f"sd {geometry} frame {k}: gap_min")
+            v = point_tuples(particles, "velocity")
+            scale = max(abs(row[f"v_{i}x"]) for i in range(n)) * force
+            for i in range(n):
+                for c, axis in enumerate("xy"[:dim]):
+                    check(abs(v[i][c] - row[f"v_{i}{axis}"] * force) <= 1e-9 * max(scale, 1e-300),
+                          f"sd {geometry} frame {k}: velocity of {i}")
+            radius = point_tuples(particles, "radius")
+            forces, deflection = point_tuples(pairs, "force"), point_tuples(pairs, "deflection")
+            # Eq. (2): |X_ij| = 2R + h - 2 delta, from the centres in the frame.
+            i_ids, j_ids = cell_values(pairs, "particle_i"), cell_values(pairs, "particle_j")
+            for b in range(bonds):
+                xi, xj = particles.GetPoint(int(i_ids[b])), particles.GetPoint(int(j_ids[b]))
+                distance = math.dist(xi, xj)
+                check(close(distance, 2 * radius[0][0] + gaps[b][0] - 2 * deflection[b][0], 1e-9),
+                      f"sd {geometry} frame {k} bond {b}: |X| {distance} against 2R + h - 2 delta")
+                check(forces[b][0] > 0, f"sd {geometry} frame {k} bond {b}: pair force {forces[b][0]}")
+    print("sd.many: frames of the line and the cluster match many.dat")
+
+
 def check_refusals(softgrain, work):
     for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
                            (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
@@ -544,6 +590,7 @@ def main():
     check_slump(softgrain, work)
     check_jam(softgrain, work)
     check_vsm(softgrain, work)
+    check_sd(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
         return 1
