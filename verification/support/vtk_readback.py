@@ -20,6 +20,9 @@ run's tables and summary:
     momentum sum rho V v equals momentum.dat;
   - SD: sd.many on a line and in a cluster: gaps and velocities equal many.dat, |X_ij| = 2R + h - 2 delta
     (eq. 2);
+  - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
+    vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
+    the box and phi;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -557,6 +560,74 @@ def check_sd(softgrain, work):
     print("sd.many: frames of the line and the cluster match many.dat")
 
 
+def check_dpm3d(softgrain, work):
+    """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
+    for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
+                                        ("shell", ["mesh=geodesic42"], 42, 80),
+                                        ("spring_network", ["network_nodes=60"], None, 0)):
+        out = work / f"compress3d-{model}"
+        run(softgrain, out, "dpm.compress3d", "--vtk", "--set", f"model={model}", "steps=4", "delta_max=0.05",
+            *extra)
+        result = out / "dpm.compress3d"
+        rows = table(result / "force.dat")
+        series = read_series(result, "dpm.compress3d")
+        s = summary(result)
+        check(len(series) == len(rows) == 4, f"compress3d {model}: {len(series)} frames for {len(rows)} rows")
+        for k, (frame, row) in enumerate(zip(series, rows)):
+            t, body, _ = frame["particles"]
+            _, plates, _ = frame["plates"]
+            check(close(t, row["delta"], 1e-10), f"compress3d {model} frame {k}: time {t}")
+            check(close(field(body, "force"), row["F"], 1e-10), f"compress3d {model} frame {k}: force")
+            check(plates.GetNumberOfPolys() == 2 and cell_values(plates, "plate_id") == [0, 1],
+                  f"compress3d {model} frame {k}: plates")
+            top = max(plates.GetPoint(i)[2] for i in range(plates.GetNumberOfPoints()))
+            zmax = max(body.GetPoint(i)[2] for i in range(body.GetNumberOfPoints()))
+            # The top plate overlaps the highest vertex's disk (radius 1/2) exactly when the table counts contacts.
+            check(zmax < top and (top < zmax + 0.5) == (row["contacts"] > 0),
+                  f"compress3d {model} frame {k}: top plate at {top}, body up to {zmax}, {row['contacts']} contacts")
+            if points is not None:
+                check(body.GetNumberOfPoints() == points and body.GetNumberOfPolys() == polys,
+                      f"compress3d {model} frame {k}: {body.GetNumberOfPoints()} points, "
+                      f"{body.GetNumberOfPolys()} faces")
+                ratio = cell_values(body, "volume_ratio")
+                check(len(set(ratio)) == 1 and 0.5 < ratio[0] < 1 + 1e-6,
+                      f"compress3d {model} frame {k}: volume ratios {set(ratio)}")
+                check(set(cell_values(body, "particle_id")) == {0}, f"compress3d {model} frame {k}: ids")
+                # The force on the vertices from the body's energy balances the plates': its z sum over the
+                # vertices touching the top plate is -F (the relaxed state), within the FIRE tolerance.
+                f = point_tuples(body, "force")
+                pushed = sum(f[i][2] for i in range(body.GetNumberOfPoints()) if body.GetPoint(i)[2] > top - 0.5)
+                check(abs(pushed - row["F"]) <= 1e-6 * max(1.0, row["F"]),
+                      f"compress3d {model} frame {k}: body force at the top {pushed} against F = {row['F']}")
+            else:
+                check(body.GetNumberOfVerts() == s["vertices"] and body.GetNumberOfLines() == s["network_springs"],
+                      f"compress3d network frame {k}: {body.GetNumberOfVerts()} nodes, "
+                      f"{body.GetNumberOfLines()} springs")
+
+    out = work / "modes3d"
+    run(softgrain, out, "dpm.modes3d", "--vtk", "--set", "particles=4", "mesh=icosahedron", "model=shell")
+    result = out / "dpm.modes3d"
+    s = summary(result)
+    series = read_series(result, "dpm.modes3d")
+    check(len(series) == 1, f"modes3d packing: {len(series)} frames (one pressure state)")
+    for k, frame in enumerate(series):
+        _, data, _ = frame["particles"]
+        _, box, _ = frame["box"]
+        check(data.GetNumberOfPoints() == 4 * 12 and data.GetNumberOfPolys() == 4 * 20,
+              f"modes3d frame {k}: {data.GetNumberOfPoints()} points, {data.GetNumberOfPolys()} faces")
+        check(box.GetNumberOfLines() == 12, f"modes3d frame {k}: box edges {box.GetNumberOfLines()}")
+        check(close(field(data, "phi"), s["phi"], 1e-6),
+              f"modes3d frame {k}: phi {field(data, 'phi')} against {s['phi']}")
+        # Each particle drawn whole, its centre in the box.
+        L = max(box.GetPoint(i)[0] for i in range(box.GetNumberOfPoints()))
+        for p in range(4):
+            centre = [sum(data.GetPoint(12 * p + v)[c] for v in range(12)) / 12 for c in range(3)]
+            check(all(0 <= c < L for c in centre), f"modes3d frame {k}: particle {p} centre {centre} outside [0, {L})")
+        ratio = cell_values(data, "volume_ratio")
+        check(all(0.5 < r < 1.5 for r in ratio), f"modes3d frame {k}: volume ratios")
+    print("dpm.compress3d and dpm.modes3d: frames read back")
+
+
 def check_refusals(softgrain, work):
     for options, words in ((["--vtk", "--vtk-every", "0"], ["--vtk-every 0", ">= 1"]),
                            (["--vtk-every", "3"], ["--vtk-every 3", "--vtk"]),
@@ -591,6 +662,7 @@ def main():
     check_jam(softgrain, work)
     check_vsm(softgrain, work)
     check_sd(softgrain, work)
+    check_dpm3d(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
         return 1
