@@ -25,6 +25,14 @@ namespace softgrain::dpm {
 
 vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x);
 
+// The contacts between the particles of a 2D system, one line per touching particle pair (m < b) from the
+// centre (vertex mean) of m, as drawn by dpm_particles, to that of b's nearest image. The pair's force is
+// that of interaction_energy (rough or smooth) on the two particles alone: F, the sum over m's vertices of
+// -dU_pair/dx, split along the unit vector n from m's centre to b's. Cell data: normal_force -F.n (> 0:
+// repulsion), tangential_force |F - (F.n) n| (the frictionless interaction still has one: the vertex forces
+// do not point along the centre line), force F on m (3-vector), particle and other_particle. [E/L]
+vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x);
+
 // The periodic box [0, L_x] x [0, L_y] as one closed polyline.
 vtk::PolyData box_outline(const Eigen::Vector2d& box);
 

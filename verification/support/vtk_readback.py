@@ -23,6 +23,8 @@ run's tables and summary:
   - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
     vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
     the box and phi;
+  - DPM 2D contacts (jam, slump): per particle, the contact forces sum to its vertices' forces; jam's contact
+    pairs and forces equal eq. (9.4) recomputed from the frame's vertices;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -307,6 +309,83 @@ def check_compress2d(softgrain, work):
                 check(body.GetNumberOfLines() == s["network_springs"], "compress2d network: springs")
 
 
+def check_contact_balance(particles, contacts, label):
+    """The contacts of a DPM 2D frame account for all of the interaction: per particle, the sum of the
+    contact forces (+F on `particle`, -F on `other_particle`) equals the sum of its vertices' forces (the
+    shape forces of a particle sum to zero)."""
+    if not check(contacts.GetCellData().GetArray("normal_force") is not None
+                 and contacts.GetCellData().GetArray("tangential_force") is not None,
+                 f"{label}: contacts without normal_force or tangential_force"):
+        return 0
+    ids = cell_values(particles, "particle_id")
+    vertex_force = particles.GetPointData().GetArray("force")
+    total = {}
+    for c in range(particles.GetNumberOfCells()):
+        cell = particles.GetCell(c)
+        f = [sum(vertex_force.GetTuple3(cell.GetPointId(k))[i] for k in range(cell.GetNumberOfPoints()))
+             for i in range(2)]
+        total[int(ids[c])] = f
+    from_contacts = {p: [0.0, 0.0] for p in total}
+    force = contacts.GetCellData().GetArray("force")
+    mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+    normal = cell_values(contacts, "normal_force") or []
+    for c in range(contacts.GetNumberOfCells()):
+        f = force.GetTuple3(c)
+        for i in range(2):
+            from_contacts[int(mine[c])][i] += f[i]
+            from_contacts[int(other[c])][i] -= f[i]
+    # A missed pair or a wrong sign errs by a whole contact force; the shape forces cancel only to round-off
+    # of their own size (the internal tensions, order k ~ 1 in the scenes' units, hidden in a relaxed frame).
+    scale = max([abs(n) for n in normal] + [0.0])
+    worst = max(abs(total[p][i] - from_contacts[p][i]) for p in total for i in range(2))
+    check(worst <= 1e-6 * scale + 1e-12, f"{label}: particle force against its contacts' sum differs by "
+          f"{worst} (largest normal force {scale})")
+    return contacts.GetNumberOfCells()
+
+
+def check_rough_contacts(particles, contacts, box, label):
+    """The contacts of a rough DPM 2D packing (k_c = 1) against eq. (9.4) recomputed from the frame: for each
+    particle pair, F on the first = sum over its vertex pairs closer than sigma_mb of (sigma_mb - r) r^/r,
+    with the other particle at its image nearest to the first; one line exactly for each touching pair."""
+    L = [max(box.GetPoint(i)[c] for i in range(box.GetNumberOfPoints())) for c in range(2)]
+    ids = cell_values(particles, "particle_id")
+    radius = particles.GetPointData().GetArray("radius")
+    shapes = {}
+    for c in range(particles.GetNumberOfCells()):
+        cell = particles.GetCell(c)
+        points = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
+        shapes[int(ids[c])] = [(particles.GetPoint(q)[:2], radius.GetValue(q)) for q in points]
+    expected = {}
+    for m in shapes:
+        for b in shapes:
+            if b <= m:
+                continue
+            cm = [sum(p[c] for p, _ in shapes[m]) / len(shapes[m]) for c in range(2)]
+            cb = [sum(p[c] for p, _ in shapes[b]) / len(shapes[b]) for c in range(2)]
+            shift = [-L[c] * round((cb[c] - cm[c]) / L[c]) for c in range(2)]
+            f, touching = [0.0, 0.0], False
+            for (pi, ri) in shapes[m]:
+                for (pj, rj) in shapes[b]:
+                    d = [pi[c] - pj[c] - shift[c] for c in range(2)]
+                    r = math.hypot(*d)
+                    if r < ri + rj:
+                        touching = True
+                        for c in range(2):
+                            f[c] += (ri + rj - r) * d[c] / r
+            if touching:
+                expected[(m, b)] = f
+    mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+    got = {(int(mine[c]), int(other[c])): contacts.GetCellData().GetArray("force").GetTuple3(c)[:2]
+           for c in range(contacts.GetNumberOfCells())}
+    check(sorted(got) == sorted(expected), f"{label}: contact pairs {sorted(got)}, eq. (9.4) {sorted(expected)}")
+    # Round-off: the frame's points are the particles shifted by whole box sides (eps L ~ 1e-15 per
+    # coordinate), and each vertex pair's force k_c (sigma - r) inherits that absolutely: 1e-13 for the sums.
+    scale = max([math.hypot(*f) for f in expected.values()] + [0.0])
+    for pair in set(got) & set(expected):
+        check(math.dist(got[pair], expected[pair]) <= 1e-9 * scale + 1e-13,
+              f"{label}: contact {pair} force {got[pair]} against eq. (9.4) {expected[pair]}")
+
+
 def check_jam(softgrain, work):
     out = work / "jam"
     particles = 6
@@ -327,6 +406,9 @@ def check_jam(softgrain, work):
         ratio = cell_values(data, "area_ratio")
         check(ratio is not None and all(0.5 < r < 1.5 for r in ratio), f"jam frame {k}: area ratios {ratio}")
         check(box.GetNumberOfLines() == 1, f"jam frame {k}: box outline")
+        lines = check_contact_balance(data, frame["contacts"][1], f"jam frame {k}")
+        check_rough_contacts(data, frame["contacts"][1], box, f"jam frame {k}")
+        check(lines > 0, f"jam frame {k}: no contacts in a jammed packing")
 
 
 def check_tissue(softgrain, work):
@@ -366,7 +448,7 @@ def check_slump(softgrain, work):
     s = summary(result)
     series = read_series(result, "dpm.slump")
     check(len(series) == s["steps"] // 5000 + 1, f"slump: {len(series)} frames for {s['steps']} steps")
-    released = 0
+    released = touching = 0
     for k, frame in enumerate(series):
         t, particles, _ = frame["particles"]
         _, walls, _ = frame["walls"]
@@ -378,7 +460,9 @@ def check_slump(softgrain, work):
         gone = field(particles, "released") == 1
         released += gone
         check(walls.GetNumberOfLines() == (2 if gone else 3), f"slump frame {k}: {walls.GetNumberOfLines()} walls")
+        touching += check_contact_balance(particles, frame["contacts"][1], f"slump frame {k}")
     check(0 < released < len(series), f"slump: {released} of {len(series)} frames after the release")
+    check(touching > 0, "slump: no contact line in any frame")
 
 
 def point_tuples(data, name):
