@@ -12,6 +12,7 @@ writes the PNG. --time is a frame index (0, 1, ...), "first" or "last".
 
 import argparse
 import sys
+import xml.etree.ElementTree as ET
 
 from paraview import simple
 
@@ -40,7 +41,10 @@ def main():
     scene.UpdateAnimationUsingDataTimeSteps()
     scene.AnimationTime = times[index]
 
-    particles = simple.ExtractBlock(Input=reader, Selectors=["/Root/particles"])
+    # With one dataset (the free L-block: no walls) the reader gives it as such, not as blocks to extract.
+    parts = {e.get("name") for e in ET.parse(args.pvd).getroot().iter("DataSet")}
+    walls = "walls" in parts
+    particles = simple.ExtractBlock(Input=reader, Selectors=["/Root/particles"]) if walls else reader
     if args.array not in reader.PointData.keys():
         sys.exit(f"vsm.py: --array {args.array}: allowed: {', '.join(reader.PointData.keys())}")
     display = simple.Show(particles, view)
@@ -53,11 +57,11 @@ def main():
     display.RescaleTransferFunctionToDataRange(True, False)
     display.SetScalarBarVisibility(view, True)
 
-    walls = simple.ExtractBlock(Input=reader, Selectors=["/Root/walls"])
-    walls_display = simple.Show(walls, view)
-    simple.ColorBy(walls_display, None)
-    walls_display.AmbientColor = walls_display.DiffuseColor = [0.6, 0.6, 0.6]
-    walls_display.Opacity = 0.25
+    if walls:
+        walls_display = simple.Show(simple.ExtractBlock(Input=reader, Selectors=["/Root/walls"]), view)
+        simple.ColorBy(walls_display, None)
+        walls_display.AmbientColor = walls_display.DiffuseColor = [0.6, 0.6, 0.6]
+        walls_display.Opacity = 0.25
 
     view.ResetCamera()
     if args.screenshot:
