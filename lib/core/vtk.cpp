@@ -81,14 +81,16 @@ void check_size(const DataArray& array, std::int64_t tuples, const std::string& 
 // The first array of each kind is the active one (ParaView colours by it by default).
 std::string active_attributes(const std::vector<DataArray>& arrays)
 {
-    std::string scalars, vectors;
+    std::string scalars, vectors, tensors;
     for (const DataArray& a : arrays) {
         if (a.components == 1 && scalars.empty()) scalars = a.name;
         if (a.components == 3 && vectors.empty()) vectors = a.name;
+        if (a.components == 9 && tensors.empty()) tensors = a.name;
     }
     std::string out;
     if (!scalars.empty()) out += " Scalars=\"" + scalars + "\"";
     if (!vectors.empty()) out += " Vectors=\"" + vectors + "\"";
+    if (!tensors.empty()) out += " Tensors=\"" + tensors + "\"";
     return out;
 }
 
@@ -174,6 +176,11 @@ void PolyData::point_vectors(std::string name, const std::vector<Vec2>& xy)
     for (const Vec2& v : xy)
         xyz.insert(xyz.end(), {v.x(), v.y(), 0.0});
     point_vectors(std::move(name), std::move(xyz));
+}
+
+void PolyData::point_tensors(std::string name, std::vector<double> values)
+{
+    point_data_.push_back(real_array(std::move(name), 9, std::move(values)));
 }
 
 void PolyData::cell_scalars(std::string name, std::vector<double> values)

@@ -7,8 +7,9 @@
 // the byte count (UInt64) followed by the raw values ("binary", uncompressed, one base64 block: what VTK's
 // own writer makes without compression). Points are 3D (z = 0 for 2D scenes); cells are vertices, lines
 // (polylines) and polygons; cell data arrays list the vertices' values first, then the lines', then the
-// polygons' (VTK's order of the cell kinds in PolyData). Point and cell arrays are Float64 (scalars or
-// 3-vectors) or Int64 (ids); field data (one tuple per array) holds a frame's scalars such as the load.
+// polygons' (VTK's order of the cell kinds in PolyData). Point and cell arrays are Float64 (scalars,
+// 3-vectors or 3 x 3 tensors of 9 components, row-major: T_xx T_xy T_xz T_yx ..., as VTK's tensors) or Int64
+// (ids); field data (one tuple per array) holds a frame's scalars such as the load.
 //
 // A frame is written atomically: each file goes to `<name>.writing` and is renamed into place, and the
 // collection is rewritten the same way after every frame, so it lists only complete frames at any moment.
@@ -26,7 +27,7 @@ namespace softgrain::vtk {
 
 enum class Encoding { ascii, base64 };
 
-// One named array of a dataset: `components` values per tuple (1 or 3), as doubles or as integers.
+// One named array of a dataset: `components` values per tuple (1, 3 or 9), as doubles or as integers.
 struct DataArray
 {
     std::string name;
@@ -54,6 +55,7 @@ class PolyData
     void point_scalars(std::string name, std::vector<double> values);
     void point_vectors(std::string name, std::vector<double> xyz);     // 3 per point
     void point_vectors(std::string name, const std::vector<Vec2>& xy); // z = 0
+    void point_tensors(std::string name, std::vector<double> values);  // 9 per point, row-major
     void cell_scalars(std::string name, std::vector<double> values);
     void cell_ids(std::string name, std::vector<std::int64_t> values);
     void cell_vectors(std::string name, std::vector<double> xyz);

@@ -9,6 +9,19 @@
 
 namespace softgrain::dpm {
 
+namespace {
+// The plate driver's observer for a body observer: adds the body's energy gradient.
+PlateObserver with_gradient(const BodyEnergy& energy, const BodyObserver& observe)
+{
+    if (!observe) return {};
+    return [&energy, &observe](const Eigen::VectorXd& x, double top, const CompressionSample& sample) {
+        Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+        energy(x, &gradient);
+        observe(x, top, sample, gradient);
+    };
+}
+} // namespace
+
 TriangleMesh compression_mesh(const std::string& name)
 {
     TriangleMesh mesh = mesh_from_name(name);
@@ -32,7 +45,7 @@ double gershgorin_bound(const Eigen::MatrixXd& m)
     return m.cwiseAbs().rowwise().sum().maxCoeff();
 }
 
-Compression3dResult compress3d_tetrahedra(const Compression3dOptions& o)
+Compression3dResult compress3d_tetrahedra(const Compression3dOptions& o, const BodyObserver& observe)
 {
     const ElasticTetrahedra body =
         elastic_tetrahedra(compression_mesh(o.mesh), IsotropicElasticity::from_young(o.E, o.nu));
@@ -42,15 +55,15 @@ Compression3dResult compress3d_tetrahedra(const Compression3dOptions& o)
     Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(body.reference.size(), body.reference.size());
     tetrahedra_energy(body, body.reference, nullptr, &hessian);
     Compression3dResult out;
-    out.compression =
-        compress_between_plates<3>(body.reference, energy, 1.0, gershgorin_bound(hessian), o.schedule);
+    out.compression = compress_between_plates<3>(body.reference, energy, 1.0, gershgorin_bound(hessian),
+                                                 o.schedule, with_gradient(energy, observe));
     out.E = o.E;
     out.nu = o.nu;
     out.vertices = body.centre() + 1;
     return out;
 }
 
-Compression3dResult compress3d_shell(const Compression3dOptions& o)
+Compression3dResult compress3d_shell(const Compression3dOptions& o, const BodyObserver& observe)
 {
     const TriangleMesh mesh = compression_mesh(o.mesh);
     const Eigen::VectorXd x = mesh_coordinates(mesh);
@@ -62,7 +75,8 @@ Compression3dResult compress3d_shell(const Compression3dOptions& o)
     Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
     shape_energy3d(shape, mesh, x, 0, nullptr, &hessian);
     Compression3dResult out;
-    out.compression = compress_between_plates<3>(x, energy, 1.0, gershgorin_bound(hessian), o.schedule);
+    out.compression = compress_between_plates<3>(x, energy, 1.0, gershgorin_bound(hessian), o.schedule,
+                                                 with_gradient(energy, observe));
     // A plate of thickness sigma whose 2D area modulus K_2D = k_a a0 equals E sigma/(2 (1 - nu)), nu = 0.
     out.E = 2 * o.ka * mean_face_area(mesh);
     out.nu = 0;
@@ -70,7 +84,7 @@ Compression3dResult compress3d_shell(const Compression3dOptions& o)
     return out;
 }
 
-Compression3dResult compress3d_network(const Compression3dOptions& o)
+Compression3dResult compress3d_network(const Compression3dOptions& o, const BodyObserver& observe)
 {
     const SpringNetwork network = disordered_sphere_network(o.network_nodes, o.cutoff, o.network_k, o.seed);
     const BodyEnergy energy = [&network](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
@@ -87,7 +101,8 @@ Compression3dResult compress3d_network(const Compression3dOptions& o)
         rows.col(s.j) += row;
     }
     Compression3dResult out;
-    out.compression = compress_between_plates<3>(network.x, energy, 1.0, rows.maxCoeff(), o.schedule);
+    out.compression = compress_between_plates<3>(network.x, energy, 1.0, rows.maxCoeff(), o.schedule,
+                                                 with_gradient(energy, observe));
     const double radius = network.x.reshaped(3, network.node_count()).colwise().norm().maxCoeff();
     out.E = affine_network_young_modulus(network, 4.0 / 3.0 * std::numbers::pi * radius * radius * radius);
     out.nu = affine_network_poisson_ratio;

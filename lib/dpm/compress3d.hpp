@@ -41,9 +41,15 @@ struct Compression3dResult
 // The named mesh, rotated so that vertex 0 is on +z, scaled to mean edge length 1.
 TriangleMesh compression_mesh(const std::string& name);
 
-Compression3dResult compress3d_tetrahedra(const Compression3dOptions& options);
-Compression3dResult compress3d_shell(const Compression3dOptions& options);
-Compression3dResult compress3d_network(const Compression3dOptions& options);
+// Sees each relaxed state: the body's coordinates (the tetrahedra's central vertex last), the top plate's
+// height, the sample, and the gradient of the body's energy at them (the plates excluded).
+using BodyObserver =
+    std::function<void(const Eigen::VectorXd&, double, const CompressionSample&, const Eigen::VectorXd&)>;
+
+Compression3dResult compress3d_tetrahedra(const Compression3dOptions& options,
+                                          const BodyObserver& observe = {});
+Compression3dResult compress3d_shell(const Compression3dOptions& options, const BodyObserver& observe = {});
+Compression3dResult compress3d_network(const Compression3dOptions& options, const BodyObserver& observe = {});
 
 // Mean face area of the mesh (the a_0 of the shell's modulus).
 double mean_face_area(const TriangleMesh& mesh);

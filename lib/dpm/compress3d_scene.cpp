@@ -8,6 +8,9 @@
 #include "core/output.hpp"
 #include "dpm/compress3d.hpp"
 #include "dpm/compress_scene.hpp"
+#include "dpm/shape_energy3d.hpp"
+#include "dpm/spring_network.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <cmath>
 
@@ -68,9 +71,37 @@ void run_compress3d(const Parameters& p, RunContext& context)
     require_below("fit_min", "fit_max");
     const std::string model = p.choice("model");
     if (model == "spring_network") context.record_seed(o.seed);
-    const Compression3dResult r = model == "tetrahedra" ? compress3d_tetrahedra(o)
-                                  : model == "shell"    ? compress3d_shell(o)
-                                                        : compress3d_network(o);
+    // ParaView frames, one per compression step, delta/D as the time value: the body (the surface mesh of the
+    // tetrahedra or the shell, the network's nodes and springs) and the plates, with field data delta_over_D
+    // and force.
+    const bool network = model == "spring_network";
+    const TriangleMesh mesh = network ? TriangleMesh{} : compression_mesh(o.mesh);
+    const SpringNetwork net = network && context.vtk()
+                                  ? disordered_sphere_network(o.network_nodes, o.cutoff, o.network_k, o.seed)
+                                  : SpringNetwork{};
+    // v0: the volume of the rest mesh (the shell's preferred volume, the tetrahedra's reference).
+    const double v0 = network ? 1.0 : mesh_volume(mesh, mesh_coordinates(mesh), 0);
+    const BodyObserver frame = [&](const Eigen::VectorXd& x, double top, const CompressionSample& sample,
+                                   const Eigen::VectorXd& gradient) {
+        if (!context.vtk()->next()) return;
+        vtk::PolyData body =
+            network ? spring_network_body(net, x)
+                    : mesh_particles({{&mesh, 0, 1.0, v0, Eigen::Vector3d::Zero()}}, x, gradient);
+        const Eigen::Matrix3Xd points = x.reshaped(3, x.size() / 3);
+        const Eigen::Vector3d low = points.rowwise().minCoeff(), high = points.rowwise().maxCoeff();
+        std::vector<vtk::Part> parts{{"particles", std::move(body)},
+                                     {"plates", plates3d((low.head<2>().array() - 1).matrix(),
+                                                         (high.head<2>().array() + 1).matrix(), 0.0, top)}};
+        for (auto& part : parts) {
+            part.data.field("delta_over_D", sample.delta_over_d);
+            part.data.field("force", sample.force);
+        }
+        context.vtk()->write(sample.delta_over_d, parts);
+    };
+    const BodyObserver observe = context.vtk() ? frame : BodyObserver{};
+    const Compression3dResult r = model == "tetrahedra" ? compress3d_tetrahedra(o, observe)
+                                  : model == "shell"    ? compress3d_shell(o, observe)
+                                                        : compress3d_network(o, observe);
     const CompressionResult& c = r.compression;
     context.count_steps(c.iterations);
 

@@ -37,24 +37,7 @@ void run_compress2d(const Parameters& p, RunContext& context)
             : SpringNetwork{};
     const auto frame = [&](const Eigen::VectorXd& x, double top, const CompressionSample& sample) {
         if (!context.vtk() || !context.vtk()->next()) return;
-        vtk::PolyData body;
-        if (network) {
-            // Cells: the nodes (vertex cells) first, then the springs (lines); spring_strain is NaN on nodes.
-            for (int v = 0; v < net.node_count(); ++v)
-                body.add_vertex(body.add_point(x(2 * v), x(2 * v + 1)));
-            std::vector<double> strain(static_cast<std::size_t>(net.node_count()), NAN);
-            for (const Spring& spring : net.springs) {
-                body.add_line({spring.i, spring.j});
-                strain.push_back((x.segment<2>(2 * spring.j) - x.segment<2>(2 * spring.i)).norm() /
-                                     spring.rest_length -
-                                 1);
-            }
-            body.point_scalars("radius",
-                               std::vector<double>(static_cast<std::size_t>(net.node_count()), 0.5));
-            body.cell_scalars("spring_strain", std::move(strain));
-        } else {
-            body = dpm_particles(shell, x);
-        }
+        vtk::PolyData body = network ? spring_network_body(net, x) : dpm_particles(shell, x);
         double x_min = INFINITY, x_max = -INFINITY;
         for (Eigen::Index v = 0; v < x.size() / 2; ++v)
             x_min = std::min(x_min, x(2 * v)), x_max = std::max(x_max, x(2 * v));

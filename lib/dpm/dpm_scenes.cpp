@@ -156,7 +156,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                 // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
                 if (p.choice("model") != "spring_network") return MemoryEstimate{};
                 return dense_matrix_memory(3 * integer(p, "network_nodes"), 1, "3 x network_nodes");
-            }));
+            })
+            .with_vtk());
     registry.add(Scene{"dpm.compress_box",
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
                        "box with repulsive walls: snapshots, overlaps, facets",
@@ -180,7 +181,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "shell / surface-tension particle and its zero modes (Fig. 9.15a), or of a jammed "
                        "bidisperse packing of them (particles > 1, Fig. 9.15b)",
                        dpm::modes3d_parameters(), dpm::run_modes3d}
-                     .needing([](const Parameters& p) { return packing3d_memory(p, 2); }));
+                     .needing([](const Parameters& p) { return packing3d_memory(p, 2); })
+                     .with_vtk());
     registry.add(Scene{"dpm.shear_modulus",
                        "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
                        "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",

@@ -36,7 +36,8 @@ void run_jam(const Parameters& p, RunContext& context)
     const JamResult r = jam(o);
     context.count_steps(r.fire_iterations);
     // ParaView frames, one per pressure state (onset, compression, decompression), the state's index as the
-    // time value (the pressure goes back down on decompression) with P, phi and the branch as field data.
+    // time value (the pressure goes back down on decompression) with P, phi and the branch as field data:
+    // the particles, the box and the contacts between particles.
     if (auto* series = context.vtk()) {
         DpmSystem system = r.system;
         for (std::size_t k = 0; k < r.states.size(); ++k) {
@@ -44,7 +45,8 @@ void run_jam(const Parameters& p, RunContext& context)
             const JamState& state = r.states[k];
             system.box = state.box;
             std::vector<vtk::Part> parts{{"particles", dpm_particles(system, state.x)},
-                                         {"box", box_outline(state.box)}};
+                                         {"box", box_outline(state.box)},
+                                         {"contacts", dpm_contacts(system, state.x)}};
             for (auto& part : parts) {
                 part.data.field("pressure", state.pressure);
                 part.data.field("phi", state.phi);

@@ -11,6 +11,7 @@
 #include "dpm/modes.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/single_particle3d.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -221,6 +222,23 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     context.record_seed(o.seed);
     Jam3dResult j = jam3d(o);
     context.count_steps(j.fire_iterations);
+    // ParaView frames, one per relaxed pressure state (P_t, then the targets above it), the state index as
+    // the time value: the particles (whole, centres in the box) and the box, field data pressure [k_v v0]
+    // and phi.
+    if (auto* series = context.vtk())
+        for (std::size_t k = 0; k < j.states.size(); ++k) {
+            if (!series->next()) continue;
+            const Jam3dState& state = j.states[k];
+            DpmSystem3d at_state = j.system;
+            at_state.box = state.box;
+            std::vector<vtk::Part> parts{{"particles", dpm_particles3d(at_state, state.x)},
+                                         {"box", box_outline3d(state.box)}};
+            for (auto& part : parts) {
+                part.data.field("pressure", state.pressure);
+                part.data.field("phi", state.phi);
+            }
+            series->write(static_cast<double>(k), parts);
+        }
     const EnergyWithDerivatives energy = [&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
                                               Eigen::MatrixXd* h) {
         return total_energy3d(j.system, y, g, h);
@@ -296,6 +314,15 @@ void run_modes3d(const Parameters& p, RunContext& context)
     const SpectrumCounts counts = write_spectrum(lambda, p.real("zero_threshold"), context);
 
     const Eigen::VectorXd& x = particle.x;
+    // ParaView: one frame, the relaxed particle (vertex diameter 1: the mesh's own unit here).
+    if (auto* series = context.vtk(); series && series->next()) {
+        Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+        shape_energy3d(particle.shape, particle.mesh, x, 0, &gradient, nullptr);
+        series->write(0.0,
+                      {{"particles",
+                        mesh_particles({{&particle.mesh, 0, 1.0, particle.shape.v0, Eigen::Vector3d::Zero()}},
+                                       x, gradient)}});
+    }
     auto& s = context.summary();
     s["zero_modes_nontrivial"] = counts.zero - 6;
     s["vertices"] = particle.mesh.vertex_count();

@@ -60,7 +60,8 @@ void run_slump_scene(const Parameters& p, RunContext& context)
     context.record_seed(o.seed);
     // ParaView frames every 2000 time steps (--vtk-every N: every N steps), from the start through both
     // stages, the simulation time step * dt as time value: the particles with their vertex velocities and
-    // the walls (floor, left wall, and the right wall until it is removed).
+    // the walls (floor, left wall, and the right wall until it is removed) and the contacts between
+    // particles.
     const auto vtk_frame = [&](const DpmSystem& system, const SlumpWorld& world, const Eigen::VectorXd& x,
                                const Eigen::VectorXd& v, long step, double time) {
         if (!context.vtk() || !context.vtk()->due(step, 2000)) return;
@@ -82,7 +83,9 @@ void run_slump_scene(const Parameters& p, RunContext& context)
             ids.push_back(2);
         }
         walls.cell_ids("wall_id", std::move(ids)); // 0 floor, 1 left, 2 right
-        std::vector<vtk::Part> parts{{"particles", std::move(particles)}, {"walls", std::move(walls)}};
+        std::vector<vtk::Part> parts{{"particles", std::move(particles)},
+                                     {"walls", std::move(walls)},
+                                     {"contacts", dpm_contacts(system, x)}};
         for (auto& part : parts) {
             part.data.field("step", static_cast<double>(step));
             part.data.field("released", std::isfinite(world.right_wall) ? 0.0 : 1.0);

@@ -9,6 +9,7 @@
 #include "sd/approach.hpp"
 #include "sd/approach_analysis.hpp"
 #include "sd/many.hpp"
+#include "sd/vtk_frames.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -354,6 +355,18 @@ void run_many(const Parameters& p, RunContext& ctx)
     const std::vector<ManySample> samples =
         integrate_many(system, positions, gaps, times, h_min, p.real("tolerance"), delta0, steps);
     ctx.count_steps(steps);
+    // ParaView frames, one per output sample (--vtk-every N: every N-th) as in many.dat, time value t in
+    // R/V: the particles and the pairs, field data time t [s] and gap_min h [m].
+    if (auto* series = ctx.vtk())
+        for (const ManySample& s : samples) {
+            if (!series->next()) continue;
+            std::vector<vtk::Part> parts = many_particle_frame(system, s);
+            for (auto& part : parts) {
+                part.data.field("time", s.t);
+                part.data.field("gap_min", *std::min_element(s.gaps.begin(), s.gaps.end()));
+            }
+            series->write(s.t * F, parts);
+        }
 
     std::vector<Column> columns{{"t", "R/V", "time, V = force/(eta R)"}};
     for (std::size_t b = 0; b < system.bonds.size(); ++b)
@@ -470,7 +483,8 @@ void register_sd_scenes(SceneRegistry& registry)
                 .at_least(4),
         },
         run_many,
-    });
+    }
+                     .with_vtk());
 }
 
 } // namespace softgrain

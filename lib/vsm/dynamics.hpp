@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <functional>
+
 namespace softgrain::vsm {
 
 struct LeapfrogState
@@ -45,5 +47,9 @@ class Leapfrog
     Eigen::VectorXd inverse_mass_, mass_;
     double dt_, damping_;
 };
+
+// Sees the start (step 0) and every time step of a run: the model and the integrator (positions, half-step
+// velocities, t, step). The scenes write ParaView frames from it (`run --vtk`); empty: not called.
+using StepObserver = std::function<void(const Model&, const Leapfrog&)>;
 
 } // namespace softgrain::vsm

@@ -39,7 +39,8 @@ double l_block_pulse(double t)
 }
 
 LBlockResult run_l_block(const LBlockSetup& s, long stride,
-                         const std::function<void(const LBlockSample&, const Points<3>&)>& observe)
+                         const std::function<void(const LBlockSample&, const Points<3>&)>& observe,
+                         const StepObserver& on_step)
 {
     const Domain domain = l_block_domain(arm, height, thickness);
     const Points<3> X = l_block_lattice(s.spacing);
@@ -79,8 +80,10 @@ LBlockResult run_l_block(const LBlockSetup& s, long stride,
     const auto [initial, x0] = sample();
     const Vec3 p0 = initial.linear;
     observe(initial, x0); // t = 0: the reference shape and zero momentum
+    if (on_step) on_step(model, integrator);
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
+        if (on_step) on_step(model, integrator);
         const bool at_load_end = k == load_steps;
         const auto [state, x] = sample(); // every step: O(N), cheap next to the forces
         r.linear_momentum_drift = std::max(r.linear_momentum_drift, (state.linear - p0).norm());

@@ -6,6 +6,7 @@
 // linear and angular momentum must stay constant (exactly with eq. (43); eq. (41) breaks angular momentum).
 #pragma once
 
+#include "vsm/dynamics.hpp"
 #include "vsm/vsm_model.hpp"
 
 #include <functional>
@@ -43,8 +44,10 @@ struct LBlockResult
 
 double l_block_pulse(double t); // p(t)
 
-// Runs the block; observe(sample, positions) is called at t = 0, every `stride` steps and at the end.
+// Runs the block; observe(sample, positions) is called at t = 0, every `stride` steps and at the end;
+// on_step, if given, at the start and every time step.
 LBlockResult run_l_block(const LBlockSetup& setup, long stride,
-                         const std::function<void(const LBlockSample&, const Points<3>&)>& observe);
+                         const std::function<void(const LBlockSample&, const Points<3>&)>& observe,
+                         const StepObserver& on_step = {});
 
 } // namespace softgrain::vsm

@@ -72,7 +72,8 @@ Domain punch_domain(double w, double h, double th)
     return d;
 }
 
-PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchSnapshot&)>& observe)
+PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchSnapshot&)>& observe,
+                      const StepObserver& on_step)
 {
     if (s.counts[0] % 3 != 0)
         throw InputError("per_side_x = " + std::to_string(s.counts[0]) +
@@ -102,10 +103,13 @@ PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchS
     r.particles = static_cast<int>(X.cols());
     r.dt = dt;
     r.dt_limit = predicted_time_step_limit(model);
+    if (on_step) on_step(model, integrator);
     for (double strain : s.snapshot_strains) {
         const double t_snapshot = strain * height / velocity;
-        while (integrator.state().t + 0.5 * dt < t_snapshot)
+        while (integrator.state().t + 0.5 * dt < t_snapshot) {
             integrator.step();
+            if (on_step) on_step(model, integrator);
+        }
         PunchSnapshot snap;
         snap.strain = strain;
         snap.t = integrator.state().t;

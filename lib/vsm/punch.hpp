@@ -7,6 +7,7 @@
 // (50).
 #pragma once
 
+#include "vsm/dynamics.hpp"
 #include "vsm/vsm_model.hpp"
 
 #include <array>
@@ -50,6 +51,8 @@ struct PunchResult
 
 Domain punch_domain(double width, double height, double thickness); // labels: box 0..5, top free 3, punch 6
 
-PunchResult run_punch(const PunchSetup& setup, const std::function<void(const PunchSnapshot&)>& observe);
+// observe sees each snapshot; on_step, if given, the start and every time step.
+PunchResult run_punch(const PunchSetup& setup, const std::function<void(const PunchSnapshot&)>& observe,
+                      const StepObserver& on_step = {});
 
 } // namespace softgrain::vsm

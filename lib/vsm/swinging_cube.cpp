@@ -109,7 +109,7 @@ Model swinging_cube_model(const SwingingCubeSetup& s, const Points<3>& X)
 
 SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
                                      const std::function<void(const SwingingCubeError&)>& observe,
-                                     int samples)
+                                     int samples, const StepObserver& on_step)
 {
     const double spacing = s.cube.length / s.per_side;
     const Points<3> X = swinging_cube_particles(s);
@@ -138,8 +138,10 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
                         s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     const long stride = samples > 0 ? std::max(1L, steps / samples) : 0;
     if (observe) observe(measure_error(s.cube, X, x0, 0.0, spacing));
+    if (on_step) on_step(model, integrator);
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
+        if (on_step) on_step(model, integrator);
         if (observe && stride > 0 && (k % stride == 0 || k == steps))
             observe(measure_error(s.cube, X, integrator.positions(), integrator.state().t, spacing));
     }

@@ -8,6 +8,7 @@
 // t_end.
 #pragma once
 
+#include "vsm/dynamics.hpp"
 #include "vsm/vsm_model.hpp"
 
 #include <cstdint>
@@ -74,9 +75,9 @@ Points<3> swinging_cube_particles(const SwingingCubeSetup& setup);
 Model swinging_cube_model(const SwingingCubeSetup& setup, const Points<3>& X);
 
 // Runs the cube to end_time; observe(error) is called at `samples` evenly spaced steps (and at t = 0) when
-// given, for error histories.
+// given, for error histories; on_step, if given, sees the start and every time step.
 SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
                                      const std::function<void(const SwingingCubeError&)>& observe = {},
-                                     int samples = 0);
+                                     int samples = 0, const StepObserver& on_step = {});
 
 } // namespace softgrain::vsm

@@ -69,7 +69,7 @@ double Material::shear_wave_speed() const
 
 Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, Material material,
              ModelOptions options)
-    : cells_(std::move(cells)), bc_(std::move(bc)), material_(material), options_(options)
+    : cells_(std::move(cells)), domain_(domain), bc_(std::move(bc)), material_(material), options_(options)
 {
     const int n = static_cast<int>(cells_.size());
     mass_.resize(static_cast<std::size_t>(n));

@@ -79,6 +79,8 @@ class Model
 
     std::size_t size() const { return cells_.size(); }
     const ReferenceCells& cells() const { return cells_; }
+    const Domain& domain() const { return domain_; }
+    const BoundaryConditions& boundary_conditions() const { return bc_; }
     const std::vector<double>& mass() const { return mass_; } // m_a = rho V_a
     const Material& material() const { return material_; }
     const ModelOptions& options() const { return options_; }
@@ -129,6 +131,7 @@ class Model
                            double t) const; // xbar_ab, section 2.4
 
     ReferenceCells cells_;
+    Domain domain_;
     BoundaryConditions bc_;
     Material material_;
     ModelOptions options_;

@@ -7,6 +7,7 @@
 #include "vsm/patch_test.hpp"
 #include "vsm/punch.hpp"
 #include "vsm/swinging_cube.hpp"
+#include "vsm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -129,13 +130,22 @@ void run_swinging_cube_scene(const Parameters& p, RunContext& context)
          {"error_interior", "1", "the same over the other particles"},
          {"mode_amplitude", "1", "projection c(t) of u_a on the mode shape u(X_a, 0) (exact: cos omega t)"},
          {"residual", "1", "sqrt(sum |u_a - c phi_a|^2 / sum |phi_a|^2): the part that is not the mode"}});
+    // ParaView frames at every time step (--vtk-every N: every N-th), time value t [s]; field data
+    // cos_omega_t, the exact mode amplitude of eq. (53).
+    const double omega = s.cube.angular_frequency();
+    const StepObserver frame = [&](const Model& model, const Leapfrog& integrator) {
+        if (context.vtk() && context.vtk()->due(integrator.state().step))
+            context.vtk()->write(
+                integrator.state().t,
+                vsm_frame(model, integrator, {{"cos_omega_t", std::cos(omega * integrator.state().t)}}));
+    };
     const auto start = std::chrono::steady_clock::now();
     const SwingingCubeResult r = run_swinging_cube(
         s,
         [&](const SwingingCubeError& e) {
             history.row({e.t, e.l2, e.boundary_layer, e.interior, e.mode_amplitude, e.residual});
         },
-        static_cast<int>(p.integer("history_samples")));
+        static_cast<int>(p.integer("history_samples")), context.vtk() ? frame : StepObserver{});
     const double wall = seconds_since(start);
     context.count_steps(r.steps);
     auto& particles = context.table("particles.dat", {{"X1", "m", "reference position"},
@@ -201,8 +211,16 @@ void run_l_block_scene(const Parameters& p, RunContext& context)
             ++next_snapshot;
         }
     };
+    // ParaView frames every 50 time steps (--vtk-every N: every N steps), time value t [s]; field data
+    // traction_pulse p(t) of the load.
+    const StepObserver frame = [&](const Model& model, const Leapfrog& integrator) {
+        if (context.vtk() && context.vtk()->due(integrator.state().step, 50))
+            context.vtk()->write(
+                integrator.state().t,
+                vsm_frame(model, integrator, {{"traction_pulse", l_block_pulse(integrator.state().t)}}));
+    };
     const auto start = std::chrono::steady_clock::now();
-    const LBlockResult r = run_l_block(s, 10, observe);
+    const LBlockResult r = run_l_block(s, 10, observe, context.vtk() ? frame : StepObserver{});
     const double wall = seconds_since(start);
     progress.finish();
     context.count_steps(r.steps);
@@ -248,8 +266,20 @@ void run_punch_scene(const Parameters& p, RunContext& context)
                                                       {"x3", "m", ""},
                                                       {"pressure", "Pa", "Cauchy pressure -tr(sigma)/3"}});
     std::vector<PunchSnapshot> taken;
+    // ParaView frames every 100 time steps (--vtk-every N: every N steps), time value t [s]: the particles
+    // (pressure as in Fig. 10) and the walls, the punch moving down; field data punch_displacement v t [m]
+    // and strain v t / height.
+    const StepObserver frame = [&](const Model& model, const Leapfrog& integrator) {
+        if (!context.vtk() || !context.vtk()->due(integrator.state().step, 100)) return;
+        const double displacement = s.punch_velocity * integrator.state().t;
+        context.vtk()->write(integrator.state().t,
+                             vsm_frame(model, integrator,
+                                       {{"punch_displacement", displacement},
+                                        {"strain", displacement / model.domain().high.y()}}));
+    };
     const auto start = std::chrono::steady_clock::now();
-    const PunchResult r = run_punch(s, [&](const PunchSnapshot& q) { taken.push_back(q); });
+    const PunchResult r = run_punch(
+        s, [&](const PunchSnapshot& q) { taken.push_back(q); }, context.vtk() ? frame : StepObserver{});
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     context.count_steps(r.steps);
     auto& out = context.summary();
@@ -361,7 +391,8 @@ void register_vsm_scenes(SceneRegistry& registry)
                      .needing([](const Parameters& p) {
                          return vsm_particle_memory(cube(double(p.integer("per_side"))),
                                                     "particles (per_side^3)");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(Scene{
         "vsm.lblock",
         "VSM L-shaped block (Frenning Figs. 6-8): free block, traction pulse, momentum conservation",
@@ -386,7 +417,8 @@ void register_vsm_scenes(SceneRegistry& registry)
                          // The L of arms 6 x 3 x 3 m and 3 x 7 x 3 m: 117 m^3.
                          return vsm_particle_memory(117.0 / cube(p.real("spacing")),
                                                     "particles (117 m^3 / spacing^3)");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(Scene{
         "vsm.punch",
         "VSM punch test (Frenning Figs. 9-10): rigid punch on the middle third, stabilisation xi, pressure "
@@ -428,7 +460,8 @@ void register_vsm_scenes(SceneRegistry& registry)
                          return vsm_particle_memory(per_side * (2 * per_side - 1) *
                                                         double(p.integer("layers")),
                                                     "particles (per_side x (2 per_side - 1) x layers)");
-                     }));
+                     })
+                     .with_vtk());
 }
 
 } // namespace softgrain

@@ -126,6 +126,27 @@ TEST_CASE("binary arrays are base64 of the UInt64 byte count and the little-endi
     CHECK(xml.find("format=\"ascii\"") == std::string::npos);
 }
 
+TEST_CASE("a 9-component point array is a row-major tensor, the active tensors [VTK XML formats]")
+{
+    vtk::PolyData data;
+    data.add_vertex(data.add_point(0, 0, 0));
+    data.add_vertex(data.add_point(1, 0, 0));
+    data.point_scalars("pressure", {1.0, 2.0});
+    data.point_tensors("deformation_gradient", {1, 2, 3, 4, 5, 6, 7, 8, 9, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    data.point_tensors("cauchy_stress", std::vector<double>(18, 0.5));
+    const std::string xml = data.xml(vtk::Encoding::ascii);
+    CHECK(xml.find("<DataArray type=\"Float64\" Name=\"deformation_gradient\" NumberOfComponents=\"9\"") !=
+          std::string::npos);
+    CHECK(array_text(xml, "deformation_gradient") == "1 2 3 4 5 6 7 8 9 1 0 0 0 1 0 0 0 1");
+    CHECK(xml.find("<PointData Scalars=\"pressure\" Tensors=\"deformation_gradient\">") != std::string::npos);
+    // 9 values per point: 17 values for two points are refused.
+    vtk::PolyData short_of_one;
+    short_of_one.add_vertex(short_of_one.add_point(0, 0, 0));
+    short_of_one.add_vertex(short_of_one.add_point(1, 0, 0));
+    short_of_one.point_tensors("F", std::vector<double>(17, 1.0));
+    CHECK_THROWS_AS(static_cast<void>(short_of_one.xml()), std::logic_error);
+}
+
 TEST_CASE("an array of the wrong size is a defect, refused when the file is made")
 {
     vtk::PolyData data;
