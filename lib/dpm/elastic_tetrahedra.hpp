@@ -2,8 +2,8 @@
 // vertices plus one central vertex (index N), forming 2N - 4 tetrahedra (central vertex, surface face f),
 // with the strain energy of eq. (9.15)
 //
-//   U = sum_f sum_{mnqr} v_f/2 eps_{f,mn} C_mnqr eps_{f,qr} = sum_f v_f (lambda/2 (tr eps_f)^2 + mu
-//   eps_f:eps_f),
+//   U = sum_f sum_{mnqr} v_f/2 eps_{f,mn} C_mnqr eps_{f,qr}
+//     = sum_f v_f (lambda/2 (tr eps_f)^2 + mu eps_f:eps_f),
 //
 // eps_f = (J_f^T J_f - I)/2 (Green-Lagrange strain), J_f = Y_f X_f^T (X_f X_f^T)^-1 = Y_f X_f^-1 (X_f is
 // square and invertible) with the edge matrices of eqs. (9.16)-(9.17): columns r_{f,k} - r_{N+1}, k = 1..3,

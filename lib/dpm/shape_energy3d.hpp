@@ -69,8 +69,8 @@ Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
 // the Hessian keeps AutoDiff. Verified against the AutoDiff gradients to round-off and against finite
 // differences (verification/dpm/shape_energy3d.cpp).
 //   grad face_volume  = (r1 x r2, r2 x r0, r0 x r1)/6;
-//   grad triangle_area: with the unit normal m = n/|n|, d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 -
-//   r0)/2,
+//   grad triangle_area: with the unit normal m = n/|n|,
+//     d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 - r0)/2,
 //     d a/d r0 = -(d a/d r1 + d a/d r2) (translation invariance); undefined for a degenerate triangle;
 //   grad dihedral_angle: the opposite points move theta only by turning their face about the edge,
 //     d theta/d c = -|e| n1/|n1|^2, d theta/d d = -|e| n2/|n2|^2 (minus: lifting c along its face's outward
