@@ -23,8 +23,8 @@ struct RingSetup
     double vertex_mass = 1; // m [kg]
 };
 
-// The ring's laws and scales: k_s, k_b from eqs. (10)-(11) with l0 = 2 R0 sin(pi/N); M_b^Y = plastic_ratio
-// M*.
+// The ring's laws and scales: k_s, k_b from eqs. (10)-(11) with l0 = 2 R0 sin(pi/N);
+// M_b^Y = plastic_ratio M*.
 struct RingScales
 {
     ShellLaws laws;

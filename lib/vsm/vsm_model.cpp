@@ -161,8 +161,8 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
             const int row = free_rows_[ua][static_cast<std::size_t>(g.slot)];
             if (row < 0) continue;
             const Mat3 free_part = I - g.D;
-            // (I - D) x'_ab with x'_ab = sum_{c in I'} K'_abc (x_c - x_a) + sum_{c in E'} K'_abc xbar_ac, eq.
-            // (23).
+            // (I - D) x'_ab with, eq. (23),
+            //   x'_ab = sum_{c in I'} K'_abc (x_c - x_a) + sum_{c in E'} K'_abc xbar_ac.
             for (int c = 0; c < m; ++c) {
                 const double coefficient = Kp(row, c);
                 if (coefficient == 0) continue;
