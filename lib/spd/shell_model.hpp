@@ -141,8 +141,8 @@ class ShellModel
     // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
     double kinetic_energy() const;
-    double
-    max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
+    // Largest unbalanced force on a free degree of freedom, damping excluded [N].
+    double max_free_force() const;
     int max_free_force_vertex() const;        // the vertex holding max_free_force()
     std::string describe_vertex(int i) const; // "vertex i of particle p", for diagnoses
     Vec2 vertex(int i) const { return {x_[2 * i], x_[2 * i + 1]}; }

@@ -173,8 +173,8 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
                         add_term(*terms, a, -coefficient * free_part, B, V);
                     }
                 } else {
-                    add_term(full, a, -2.0 * coefficient * free_part, B,
-                             V); // xbar_ac = 2 (w_ac - x_a), eq. (68)
+                    // xbar_ac = 2 (w_ac - x_a), eq. (68)
+                    add_term(full, a, -2.0 * coefficient * free_part, B, V);
                 }
             }
         }
@@ -299,9 +299,10 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
                 "above the stability limit, or missing stabilisation (xi = 0)");
         }
         P[static_cast<std::size_t>(a)] = neo_hookean_stress(F[static_cast<std::size_t>(a)], lame); // eq. (48)
+        // Artificial viscosity, eq. (51).
         if (v && (options_.c1 > 0 || options_.c2 > 0))
             P[static_cast<std::size_t>(a)] +=
-                viscous_stress(F[static_cast<std::size_t>(a)], deformation_rate(x, *v, a, t), a); // eq. (51)
+                viscous_stress(F[static_cast<std::size_t>(a)], deformation_rate(x, *v, a, t), a);
     }
 
     Points<3> f = Points<3>::Zero(3, n);
