@@ -10,8 +10,11 @@
 // in the reference (X_f) and the deformed (Y_f) state. C is isotropic with Lame constants
 // lambda = E nu/((1 + nu)(1 - 2 nu)), mu = E/(2 (1 + nu)), so the energy is that of a Saint Venant-Kirchhoff
 // solid, piecewise homogeneous in each tetrahedron (decision dpm-tetra-energy: v_f is the reference volume).
+// Sign: eps_f > 0 in extension; U >= 0 for lambda + 2 mu/3 >= 0 and mu >= 0 (E > 0, -1 < nu < 1/2);
+// tetrahedra_energy adds the gradient dU/dx = minus the forces.
 // Units: lengths [L], E [energy/L^3]; returns energies [energy]. Valid for any deformation with det J_f > 0
-// (Saint Venant-Kirchhoff softens in strong compression, beyond ~40 % uniaxial strain).
+// (Saint Venant-Kirchhoff softens in strong compression, beyond ~40 % uniaxial strain). Only the reference
+// state is checked (elastic_tetrahedra() refuses an inverted tetrahedron); the energy does not check J_f.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"

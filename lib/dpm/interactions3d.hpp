@@ -24,7 +24,9 @@
 // (decision dpm-smooth-half). No edge-edge term: two edges that cross with no vertex within sigma_mb of the
 // other surface are not seen (contacts are between a vertex and a surface, as in the paper).
 //
-// Validity: the vertex lies outside particle beta. A vertex that has passed through a face (it lies on
+// Sign: repulsive (U(d) >= 0; the subtracted edge terms only cancel doubly counted faces); the functions
+// add the gradient dU/dx = minus the forces.
+// Valid for a vertex outside particle beta. A vertex that has passed through a face (it lies on
 // the inner side of the face whose interior holds its nearest point, closer than sigma_mb) is reported as
 // a NumericalError; the mesh must have no spikes sharper than 90 degrees within sigma_mb of the vertex
 // (there an unsigned distance would also see the far side).

@@ -8,6 +8,8 @@
 // contact term is evaluated with (rough pairs, and the smooth vertex-edge terms, section 9.4.2). Kinetic
 // terms vanish for static packings. Sign: positive in compression; pressure P = Tr(Sigma)/2.
 // Units [E/L^2]. Anchors (external constraints) are not part of the stress.
+// Valid for static packings (no kinetic term) in a periodic box (InputError without one) whose side
+// exceeds twice the largest particle reach (interactions.hpp); eq. (9.27) for rough interactions only.
 #pragma once
 
 #include "dpm/system.hpp"
