@@ -16,8 +16,9 @@
 // point of the mesh lies inside a face, on an edge or at a vertex of a convex part of the mesh, all other
 // terms cancel in pairs (identical functions of the same vertices) and U_i,beta = U(distance to the mesh);
 // at a concave edge the two faces count and the edge term is subtracted where the point sees both, which
-// makes the forces continuous. In 2D the same sum over edges and vertices is exactly eqs. (9.6) + (9.8) +
-// (9.9). On a planar patch of the mesh U_i,beta = U(height above the plane) wherever the point lies.
+// makes the forces continuous. In 2D the same sum over edges and vertices is exactly
+// eqs. (9.6) + (9.8) + (9.9). On a planar patch of the mesh U_i,beta = U(height above the plane) wherever
+// the point lies.
 //
 // Both ways (decision dpm-3d-smooth-both-ways): every vertex of mu against the surface of beta and every
 // vertex of beta against the surface of mu, each ordered term with the factor 1/2 of eq. (9.5) as in 2D
