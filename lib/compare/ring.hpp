@@ -7,9 +7,9 @@
 //     by FIRE between two plates of vertex repulsion (dpm::compress_between_plates).
 // Both take their constants from the same E, h through SPD eqs. (10)-(11): edge spring
 // k_s = k_l = E h/(1-nu^2) [N/m] and hinge k_b = E h^3/(12(1-nu^2)) [N m], so that both have the bending
-// rigidity B = k_b l0 and the stretching rigidity k_s l0 (l0 = 2R sin(pi/N)), with B/(k_s l0 R^2) =
-// (h/R)^2/12 as for a continuous shell (decision compare-ring-mapping). The vertex disks have diameter h
-// and touch the plates through a linear spring k_s in both (decision compare-ring-plates).
+// rigidity B = k_b l0 and the stretching rigidity k_s l0 (l0 = 2R sin(pi/N)), with
+// B/(k_s l0 R^2) = (h/R)^2/12 as for a continuous shell (decision compare-ring-mapping). The vertex disks
+// have diameter h and touch the plates through a linear spring k_s in both (decision compare-ring-plates).
 //
 // The reference is the inextensible elastica (lib/spd/elastica.hpp) at the same eps. Observables, per
 // recorded strain: F R^2/B (F the force on one plate), a/b0 (a the width of the vertex cloud), V/V0 (area

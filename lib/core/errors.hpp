@@ -4,8 +4,8 @@
 // NumericalError -> exit code 3: numerical trouble. The message names the quantity, the step and the
 //                   likely cause (e.g. a time step above the stability limit).
 // IoError        -> exit code 4: the machine refused: a file or directory that cannot be written (the path
-//                   and the system's reason), a full disk; std::bad_alloc and std::filesystem errors map
-//                   here.
+//                   and the system's reason), a full disk; std::bad_alloc and std::filesystem errors
+//                   map here.
 // anything else  -> exit code 5: an internal error (a defect of softgrain, to be reported).
 // In every case the run's partial output directory is removed: nothing half-written is left behind.
 #pragma once

@@ -66,8 +66,8 @@ struct SegmentProximity
 {
     double a = 0;      // signed projection AC.AB/|AB| of C on the segment axis, measured from A [length]
     double length = 0; // l = |AB| [length]
-    double distance =
-        0; // |C - closest point| [length]; the overlap of sphero-objects is distance - (r_i + r_j)
+    // |C - closest point| [length]; the overlap of sphero-objects is distance - (r_i + r_j)
+    double distance = 0;
     Vec2 closest = Vec2::Zero(); // closest point of the segment
     Vec2 normal = Vec2::Zero();  // unit vector from the closest point towards C; where C lies on the segment,
                                  // the left-hand normal of AB

@@ -60,8 +60,8 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
         for (int k = 0; k < Dim; ++k) {
             double u = (x[k] - origin[k]) / side[k];
             if (box_) u -= cells[k] * std::floor(u / cells[k]);
-            c[k] =
-                std::clamp(static_cast<int>(std::floor(u)), 0, cells[k] - 1); // guards round-off at the edge
+            // The clamp guards round-off at the edge.
+            c[k] = std::clamp(static_cast<int>(std::floor(u)), 0, cells[k] - 1);
         }
         return c;
     };

@@ -55,8 +55,8 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
     const double ka = 1.0 / (a0_small * a0_small);
     out.pressure_unit = ka * a0_small; // k_a a0: the area (bulk) modulus of one particle
     s.kc = o.deformable ? 1.0 : out.pressure_unit;
-    const double d_small =
-        2 * r_small + sigma; // outer diameter of the small particle (vertex disks included)
+    // Outer diameter of the small particle (vertex disks included).
+    const double d_small = 2 * r_small + sigma;
     out.diameter_small = d_small;
     double area = 0;
     for (int m = 0; m < o.particles; ++m)

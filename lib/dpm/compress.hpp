@@ -1,8 +1,8 @@
 // Uniaxial compression of one body between two flat rigid plates, DPM section 9.3.4: in 2D (Fig. 9.10) an
 // elastic shell (eq. 9.1) or a spring-network disk (spring_network.hpp); the 3D bodies of Fig. 9.11 use the
 // same driver (compress3d.hpp). The plates are normal to the last axis (y in 2D, z in 3D): the bottom plate
-// (height 0) is fixed, the top plate (height H) moves down by delta in steps, each followed by FIRE on body
-// + plate energy
+// (height 0) is fixed, the top plate (height H) moves down by delta in steps, each followed by FIRE on
+// body + plate energy, with the plate law
 //   U^plate = sum_{t=1,2} sum_i k_p/2 (sigma/2 - r_i^t)^2 Theta(sigma/2 - r_i^t),  k_p/k_c = 4,
 // r_i^t = distance of vertex i from plate t. F_a = force of the particle on the top plate.
 #pragma once

@@ -1,8 +1,10 @@
 // The three bodies of DPM Fig. 9.11, each compressed between two plates by the protocol of compress.hpp
 // (section 9.3.4, plate law U^plate with k_p/k_c = 4, plates normal to z):
 //   tetrahedra:     a surface mesh + central vertex with the strain energy of eq. (9.15)
-//   (elastic_tetrahedra.hpp), shell:          the shape energy of eq. (9.2) with A0 = A_min, k_v, k_a, k_b >
-//   0, theta_e0 = the mesh's angles, spring_network: a disordered 3D network ball (spring_network.hpp).
+//                   (elastic_tetrahedra.hpp),
+//   shell:          the shape energy of eq. (9.2) with A0 = A_min, k_v, k_a, k_b > 0,
+//                   theta_e0 = the mesh's angles,
+//   spring_network: a disordered 3D network ball (spring_network.hpp).
 // Units (decision dpm-compress3d-units): sigma = 1 = the vertex diameter = the mean edge length of the mesh
 // (the node spacing of the network), energies in k_c sigma^2, so forces in k_c sigma and E in k_c/sigma.
 // The meshes are rotated so that a vertex (and its antipode) lies on the z axis: the pole vertex is the

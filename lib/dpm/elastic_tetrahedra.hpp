@@ -2,16 +2,19 @@
 // vertices plus one central vertex (index N), forming 2N - 4 tetrahedra (central vertex, surface face f),
 // with the strain energy of eq. (9.15)
 //
-//   U = sum_f sum_{mnqr} v_f/2 eps_{f,mn} C_mnqr eps_{f,qr} = sum_f v_f (lambda/2 (tr eps_f)^2 + mu
-//   eps_f:eps_f),
+//   U = sum_f sum_{mnqr} v_f/2 eps_{f,mn} C_mnqr eps_{f,qr}
+//     = sum_f v_f (lambda/2 (tr eps_f)^2 + mu eps_f:eps_f),
 //
 // eps_f = (J_f^T J_f - I)/2 (Green-Lagrange strain), J_f = Y_f X_f^T (X_f X_f^T)^-1 = Y_f X_f^-1 (X_f is
 // square and invertible) with the edge matrices of eqs. (9.16)-(9.17): columns r_{f,k} - r_{N+1}, k = 1..3,
 // in the reference (X_f) and the deformed (Y_f) state. C is isotropic with Lame constants
 // lambda = E nu/((1 + nu)(1 - 2 nu)), mu = E/(2 (1 + nu)), so the energy is that of a Saint Venant-Kirchhoff
 // solid, piecewise homogeneous in each tetrahedron (decision dpm-tetra-energy: v_f is the reference volume).
+// Sign: eps_f > 0 in extension; U >= 0 for lambda + 2 mu/3 >= 0 and mu >= 0 (E > 0, -1 < nu < 1/2);
+// tetrahedra_energy adds the gradient dU/dx = minus the forces.
 // Units: lengths [L], E [energy/L^3]; returns energies [energy]. Valid for any deformation with det J_f > 0
-// (Saint Venant-Kirchhoff softens in strong compression, beyond ~40 % uniaxial strain).
+// (Saint Venant-Kirchhoff softens in strong compression, beyond ~40 % uniaxial strain). Only the reference
+// state is checked (elastic_tetrahedra() refuses an inverted tetrahedron); the energy does not check J_f.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"

@@ -10,10 +10,18 @@
 //                     edges j and j+1 (seen from vertex j) and lies outside both: removes the double counting
 //                     of the two edge terms near a concave corner, so that forces are continuous;
 //   U^convex  (9.9) = k_c/2 (sigma_mb - r)^2 when r < sigma_mb and vertex i lies beyond both edges at
-//                     vertex j (the gap at a convex corner).
+//                     vertex j (the gap at a convex corner; the paper prints Theta(r - sigma_mb), the text
+//                     and continuity give Theta(sigma_mb - r): decision dpm-eq99-heaviside).
 //   The 1/2 of eq. (9.5) multiplies every ordered term as printed (decision dpm-smooth-half).
 // Particles with one vertex are disks: they carry no edges (they interact through their vertex only).
-// Energies in [E], k_c [E/L^2]; the gradient (= minus the forces) and Hessian come from local AutoDiff.
+// Sign: repulsive, U >= 0 (U^concave < 0 only cancels a doubly counted edge term); the functions add the
+// gradient dU/dx = minus the forces. Units: energies [E], k_c [E/L^2], lengths [L]. The gradient and the
+// Hessian come from local AutoDiff.
+// Valid for particles whose vertices are counter-clockwise and unwrapped, and overlaps smaller than
+// sigma_mb: a smooth vertex that has crossed an edge line (d <= 0) feels no edge term, so nothing pushes
+// it back out. In a periodic box each pair interacts through one image only, so the box side must
+// exceed twice the largest particle reach 2 R + sigma (R: largest vertex distance from the vertex mean),
+// else NumericalError.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"

@@ -16,15 +16,18 @@
 // point of the mesh lies inside a face, on an edge or at a vertex of a convex part of the mesh, all other
 // terms cancel in pairs (identical functions of the same vertices) and U_i,beta = U(distance to the mesh);
 // at a concave edge the two faces count and the edge term is subtracted where the point sees both, which
-// makes the forces continuous. In 2D the same sum over edges and vertices is exactly eqs. (9.6) + (9.8) +
-// (9.9). On a planar patch of the mesh U_i,beta = U(height above the plane) wherever the point lies.
+// makes the forces continuous. In 2D the same sum over edges and vertices is exactly
+// eqs. (9.6) + (9.8) + (9.9). On a planar patch of the mesh U_i,beta = U(height above the plane) wherever
+// the point lies.
 //
 // Both ways (decision dpm-3d-smooth-both-ways): every vertex of mu against the surface of beta and every
 // vertex of beta against the surface of mu, each ordered term with the factor 1/2 of eq. (9.5) as in 2D
 // (decision dpm-smooth-half). No edge-edge term: two edges that cross with no vertex within sigma_mb of the
 // other surface are not seen (contacts are between a vertex and a surface, as in the paper).
 //
-// Validity: the vertex lies outside particle beta. A vertex that has passed through a face (it lies on
+// Sign: repulsive (U(d) >= 0; the subtracted edge terms only cancel doubly counted faces); the functions
+// add the gradient dU/dx = minus the forces.
+// Valid for a vertex outside particle beta. A vertex that has passed through a face (it lies on
 // the inner side of the face whose interior holds its nearest point, closer than sigma_mb) is reported as
 // a NumericalError; the mesh must have no spikes sharper than 90 degrees within sigma_mb of the vertex
 // (there an unsigned distance would also see the far side).

@@ -29,8 +29,8 @@ struct JamOptions
     int pressures = 5;       // targets log-spaced in (P_t, pressure_max]
     double phi_start = 0.3;  // disks: packing fraction of the random start
     double A0_floppy = 1.04; // floppy particles: preferred shape parameter (Fig. 9.14)
-    double kl_surface =
-        0.01; // surface-tension particles: k_l [k_c] (Table 9.1: ~0; decision dpm-jam-surface-kl)
+    // Surface-tension particles: k_l [k_c] (Table 9.1: ~0; decision dpm-jam-surface-kl).
+    double kl_surface = 0.01;
     std::uint64_t seed = 1;
     bool decompress = false; // after pressure_max, expand back down through the same targets (Fig. 9.13b-d)
 };

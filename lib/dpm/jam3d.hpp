@@ -42,8 +42,8 @@ struct Jam3dOptions
     // A packing that is a saddle at a target is moved off it and compressed to the target again, at most
     // this often per target (reach_stable_pressure, decision dpm-packing-minimum); 0: never checked.
     int saddle_escapes = 4;
-    double zero_threshold =
-        1e-10;                  // [k_v v0^(4/3)]: below minus it (or the round-off bound) a mode is negative
+    // [k_v v0^(4/3)]: below minus it (or the round-off bound) a mode is negative.
+    double zero_threshold = 1e-10;
     long fire_budget = 1000000; // FIRE steps per relaxation; beyond them: NumericalError
     double jump_step = 0;       // BoxSchedule::jump_step (0: off)
 };

@@ -43,11 +43,11 @@ std::vector<double> particle_areas(const DpmSystem& system, const Eigen::VectorX
 // Analytic eqs. (9.18)-(9.22) for the periodic system (system.box must be set).
 PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x);
 
-// Monte-Carlo integration with `samples` uniform points in the box: phi = fraction in the union; A_polygon =
-// fraction in some polygon; A_vertices = mean number of vertex disks covering a point; A_sector = mean
-// number of disks covering a point inside their own polygon; A_pair = the multiplicity excess
-// [polygon] + #disks - #sectors - [union] (the area eq. 9.18 subtracts). Errors: sample standard deviation
-// over sqrt(samples).
+// Monte-Carlo integration with `samples` uniform points in the box: phi = fraction in the union;
+// A_polygon = fraction in some polygon; A_vertices = mean number of vertex disks covering a point;
+// A_sector = mean number of disks covering a point inside their own polygon; A_pair = the multiplicity
+// excess [polygon] + #disks - #sectors - [union] (the area eq. 9.18 subtracts). Errors: sample standard
+// deviation over sqrt(samples).
 PackingAreasEstimate packing_areas_monte_carlo(const DpmSystem& system, const Eigen::VectorXd& x,
                                                long samples, std::uint64_t seed);
 

@@ -6,6 +6,10 @@
 // edge from vertex i-1 to vertex i; theta_i: turning (bending) angle at vertex i between the edges
 // (i-1 -> i) and (i -> i+1), atan2(cross, dot), so a convex CCW regular N-gon has theta_i = 2 pi/N;
 // p = sum_i l_i (line tension gamma). Units: lengths [L], k_a [E/L^4], k_l [E/L^2], k_b [E], gamma [E/L].
+// Sign: U_shape >= 0 for k_a, k_l, k_b, gamma >= 0; shape_energy adds the gradient dU/dx = minus the forces.
+// Valid for a simple (not self-intersecting) counter-clockwise polygon, unwrapped, with edges of non-zero
+// length (the gradient of l_i is singular at l_i = 0) and turning angles away from +-pi, where theta_i
+// jumps by 2 pi (an edge folded back onto its neighbour). A clockwise polygon has a < 0.
 //
 // Each term is written once as a local function of the coordinates it depends on, templated on the
 // scalar; forces and the exact Hessian come from local_derivatives.hpp. The area term is a penalty of a

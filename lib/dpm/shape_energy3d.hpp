@@ -7,6 +7,11 @@
 // theta_e: bending angle at edge e, the signed angle between the outward normals of the two faces sharing
 // it (0 for a flat surface, positive where the surface is convex); s = sum_f a_f (surface tension gamma).
 // Units: lengths [L], k_v [E/L^6], k_a [E/L^4], k_b [E], gamma [E/L^2].
+// Sign: U >= 0 for k_v, k_a, k_b, gamma >= 0; v > 0 and theta_e > 0 at convex edges for an
+// outward-oriented mesh; shape_energy3d adds the gradient dU/dx = minus the forces.
+// Valid for a closed, outward-oriented (mesh3d.hpp), unwrapped surface that does not intersect itself,
+// with non-degenerate faces (the gradients of a_f and theta_e are undefined for a degenerate triangle)
+// and bending angles away from +-pi, where theta_e jumps by 2 pi (a face folded onto its neighbour).
 //
 // Each term is written once as a local function of the coordinates of its points, templated on the
 // scalar; the exact Hessian follows from local_derivatives.hpp (as in 2D, shape_energy.hpp), and so do the
@@ -69,8 +74,8 @@ Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
 // the Hessian keeps AutoDiff. Verified against the AutoDiff gradients to round-off and against finite
 // differences (verification/dpm/shape_energy3d.cpp).
 //   grad face_volume  = (r1 x r2, r2 x r0, r0 x r1)/6;
-//   grad triangle_area: with the unit normal m = n/|n|, d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 -
-//   r0)/2,
+//   grad triangle_area: with the unit normal m = n/|n|,
+//     d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 - r0)/2,
 //     d a/d r0 = -(d a/d r1 + d a/d r2) (translation invariance); undefined for a degenerate triangle;
 //   grad dihedral_angle: the opposite points move theta only by turning their face about the edge,
 //     d theta/d c = -|e| n1/|n1|^2, d theta/d d = -|e| n2/|n2|^2 (minus: lifting c along its face's outward

@@ -1,12 +1,12 @@
 // Shear modulus of a jammed periodic packing, DPM section 9.4.3 (Fig. 9.16a in 2D, 9.16b in 3D): simple shear
 // steps x'_i = x_i + dgamma y_i with Lees-Edwards boundaries (dgamma = 5e-9), an energy minimisation after
-// each, shear stress Sigma~ = -Sigma_xy (eq. 9.26 in 2D, its 3D analogue in system3d.hpp) and G = d Sigma~ /
-// d gamma (least-squares slope over the steps). The minimisation after each step is Newton's method with the
-// pseudo-inverse of the dynamical matrix (polish_newton) from the previous equilibrium: for a step of 5e-9
-// the quadratic model is exact to O(dgamma^2), so it reaches the minimum FIRE would approach, to round-off
-// (decision dpm-shear-modulus). The procedure is written once, on the three operations it needs from a
-// packing (ShearablePacking); 2D and 3D systems provide them. Units: G and Sigma in the stress unit of the
-// system, [E/L^2] in 2D, [E/L^3] in 3D.
+// each, shear stress Sigma~ = -Sigma_xy (eq. 9.26 in 2D, its 3D analogue in system3d.hpp) and
+// G = d Sigma~ / d gamma (least-squares slope over the steps). The minimisation after each step is Newton's
+// method with the pseudo-inverse of the dynamical matrix (polish_newton) from the previous equilibrium: for a
+// step of 5e-9 the quadratic model is exact to O(dgamma^2), so it reaches the minimum FIRE would approach, to
+// round-off (decision dpm-shear-modulus). The procedure is written once, on the three operations it needs
+// from a packing (ShearablePacking); 2D and 3D systems provide them. Units: G and Sigma in the stress unit of
+// the system, [E/L^2] in 2D, [E/L^3] in 3D.
 #pragma once
 
 #include "dpm/modes.hpp"

@@ -36,9 +36,10 @@ struct SingleParticle3d
     long fire_iterations = 0;
 };
 
-// Rest state of Table 9.1's model on the mesh at coordinates x (point v at x(3v)): v0 = its volume, a_f0 =
-// c times its face areas with c = (A0/A_mesh)^(2/3), theta_e0 = its bending angles (shell only), k_v = kv,
-// k_a, k_b (shell), gamma (surface_tension) from k. InputError if A0 < A_mesh (the mesh's own A^3D).
+// Rest state of Table 9.1's model on the mesh at coordinates x (point v at x(3v)): v0 = its volume,
+// a_f0 = c times its face areas with c = (A0/A_mesh)^(2/3), theta_e0 = its bending angles (shell only),
+// k_v = kv, k_a, k_b (shell), gamma (surface_tension) from k. InputError if A0 < A_mesh (the mesh's own
+// A^3D).
 ShapeParameters3d model_shape3d(ShapeModel model, const TriangleMesh& mesh, const Eigen::VectorXd& x,
                                 double A0, double kv, const Stiffness3d& k);
 

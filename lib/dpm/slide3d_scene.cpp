@@ -73,9 +73,10 @@ void run_slide3d(const Parameters& p, RunContext& context)
     const int n = 2 * static_cast<int>(std::ceil((0.5 * length + radius + std::abs(offset)) / spacing)) + 5;
     s.meshes.push_back(slab_mesh(n, spacing, 2 * sigma));
     TriangleMesh ball = mesh_from_name(p.choice("mesh"));
+    // Vertex 0 down.
     ball.vertices = Eigen::Quaterniond::FromTwoVectors(ball.vertices.col(0), -Eigen::Vector3d::UnitZ())
                         .toRotationMatrix() *
-                    ball.vertices; // vertex 0 down
+                    ball.vertices;
     s.meshes.push_back(ball);
     Eigen::VectorXd x;
     s.add_particle(0, s.meshes[0].vertices, sigma, ShapeParameters3d{}, x);

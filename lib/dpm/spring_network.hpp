@@ -2,6 +2,9 @@
 // U = sum_springs k/2 (|r_i - r_j| - l_ij0)^2 (the edge penalty of eq. 9.1, in 2D or 3D), the bulk-elastic
 // references against which the elastic shells are compared: a disk in 2D (Fig. 9.10a), a ball in 3D
 // (Fig. 9.11a).
+// Sign: U >= 0; spring_network_energy adds the gradient dU/dx = minus the forces. Units: lengths in the
+// node spacing a [L], k [E/L^2], U [E]. Valid for springs of non-zero length (the gradient of |r_i - r_j|
+// is singular at r_i = r_j); a spring pulls and pushes alike, with no bending or contact between nodes.
 //
 // 2D disk:
 // Construction (decision dpm-spring-network): the `nodes` points of a triangular lattice of spacing a = 1

@@ -7,8 +7,8 @@
 //
 // or, with interaction = smooth, through the vertex-face repulsion of sphero-polyhedra (interactions3d.hpp),
 // in open space or a periodic cubic box of side L, optionally sheared (Lees-Edwards). r_ij is the
-// minimum-image distance of each vertex pair (decision dpm-3d-vertex-image): exact for L > 2 max sigma (1 +
-// |gamma|), whatever the size of the particles.
+// minimum-image distance of each vertex pair (decision dpm-3d-vertex-image): exact for
+// L > 2 max sigma (1 + |gamma|), whatever the size of the particles.
 //
 // State: one flat Eigen::VectorXd x, vertex v at x(3v) ... x(3v + 2); each particle's vertices are stored
 // unwrapped (the particle whole). The total energy, its gradient (= minus the forces) and its exact Hessian

@@ -55,10 +55,10 @@ int rhs(double t, const double y[], double f[], void* params)
     return std::isfinite(f[0]) && std::isfinite(f[1]) ? GSL_SUCCESS : GSL_FAILURE;
 }
 
-// Jacobian for the implicit steppers (and jacobian_modes), by central differences. Both X and h move delta =
-// (2R + h - X)/2, and the rates vary on the scale of min(delta, h): steps 1e-6 min(delta, h), but never below
-// 1e3 eps |X|, where the round-off of delta would dominate (relative accuracy 1e-3 at worst, when delta/X ~
-// 1e-8).
+// Jacobian for the implicit steppers (and jacobian_modes), by central differences. Both X and h move
+// delta = (2R + h - X)/2, and the rates vary on the scale of min(delta, h): steps 1e-6 min(delta, h), but
+// never below 1e3 eps |X|, where the round-off of delta would dominate (relative accuracy 1e-3 at worst,
+// when delta/X ~ 1e-8).
 int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* params)
 {
     auto* s = static_cast<System*>(params);
@@ -295,8 +295,8 @@ ApproachRun integrate_approach(const ApproachProblem& p, const IntegratorSetting
             const ApproachSample& last = run.samples.back();
             const double drop = std::min(log_spacing, std::log(y[1] / p.h_min));
             const double tau = y[1] / std::abs(last.rates.h_dot);
-            // Time for ln h to drop by `drop` if h-dot ~ h^exponent: tau (e^{(exponent-1) drop} -
-            // 1)/(exponent - 1).
+            // Time for ln h to drop by `drop` if h-dot ~ h^exponent:
+            //   tau (e^{(exponent-1) drop} - 1)/(exponent - 1).
             const double dt = std::abs(exponent - 1.0) < 1e-6
                                   ? tau * drop
                                   : tau * std::expm1((exponent - 1.0) * drop) / (exponent - 1.0);

@@ -26,8 +26,8 @@ struct ApproachAnalysis
     std::vector<double> deflection_residual; // |delta(eq. 2) / delta_eq(h) - 1|, delta_eq from eq. (1)
     std::vector<double> time_reference;      // t(h) by quadrature (constant loading)
     std::vector<double> h_error;             // |h-dot| |t - t_ref(h)| / h: relative error of h(t)
-    std::optional<RegimePoint> stokes, poiseuille,
-        hertz;                         // empty when the narrowest width exceeds the threshold
+    // Empty when the narrowest width exceeds the threshold.
+    std::optional<RegimePoint> stokes, poiseuille, hertz;
     std::optional<double> h_crossover; // where delta = h (interpolated in ln h)
     double lambda_error_max = 0;       // max |lambda_sim - lambda_exact| over interior samples
 };

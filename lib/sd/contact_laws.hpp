@@ -1,5 +1,9 @@
 // Soft Dynamics (Rognon & Gay): the laws of one lubricated contact between two identical elastic spheres.
 //
+//   F_ela(a, delta) = alpha E a delta                                                (3)
+//   F_vis = -zeta h-dot,  zeta(a, h) = 3 pi eta a^4 / (2 h-bar^3),  h-bar = R h/(R + h)  (4)
+//   a(h, delta) = sqrt(2 R (h-bar + |delta|))                                        (5)
+//
 // The paper stresses that F_ela(a, delta), F_adh(a, h) and a(h, delta) "can be changed at will"; the
 // dynamics (eqs. 7, 9) only need their values and partial derivatives. ContactLaws therefore holds them as
 // replaceable functions; paper_contact_laws() gives the paper's choices (eqs. 3, 4, 5, F_adh = 0).
@@ -7,6 +11,8 @@
 // Conventions (the paper's): h is the surface-to-surface gap (m), delta the surface deflection of each
 // particle, positive in compression (m), a the radius of the interacting region (m). Forces are normal,
 // positive when they push the particles apart (F_ext compressive, F_ela repulsive), in N. zeta in N s/m.
+// Valid for h > 0 (zeta diverges as h-bar^-3 at contact) and small deflections delta << R (the paper leaves
+// out delta ~ R, kappa > 1); a has a kink at delta = 0, where da/ddelta is taken as 0.
 #pragma once
 
 #include <functional>

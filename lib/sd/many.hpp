@@ -1,10 +1,11 @@
 // Soft Dynamics of several contacting particles (Rognon & Gay, note [20]).
 //
-// Each bonded pair ij has a centre vector X_ij = X_j - X_i, unit normal n_ij, distance |X_ij| = 2R + h_ij - 2
-// delta_ij (eq. 2), and its own zeta_ij, C_ij, D_ij (eqs. 4, 8, 9). The pair force F_ij = F_ela(a_ij,
-// delta_ij) (> 0 when repulsive) balances the external forces, F_i^ext = sum_j F_ij n_ij (eq. 1 per particle,
-// a vector sum). Differentiating this balance with eq. (8) per pair (the normals n_ij held fixed: normal
-// motion only, as in the paper) gives one vector equation per particle for the centre velocities V_i:
+// Each bonded pair ij has a centre vector X_ij = X_j - X_i, unit normal n_ij, distance
+// |X_ij| = 2R + h_ij - 2 delta_ij (eq. 2), and its own zeta_ij, C_ij, D_ij (eqs. 4, 8, 9). The pair force
+// F_ij = F_ela(a_ij, delta_ij) (> 0 when repulsive) balances the external forces, F_i^ext = sum_j F_ij n_ij
+// (eq. 1 per particle, a vector sum). Differentiating this balance with eq. (8) per pair (the normals n_ij
+// held fixed: normal motion only, as in the paper) gives one vector equation per particle for the centre
+// velocities V_i:
 //   sum_j C_ij n_ij n_ij . (V_j - V_i) = -dF_i^ext/dt - sum_j (C_ij/D_ij)(F_ij - F_adh_ij) n_ij.
 // (The paper prints "+" before the last sum; deriving it from eq. 9 gives "-", the sign for which two
 // particles reproduce the pair result: see data/sd/decisions.toml, sd-note20-sign.) The equations are not

@@ -12,8 +12,8 @@
 //   Poiseuille (delta << h << R):  lambda2 = 1 - h/R + 3 delta/h + ...,       w_P = h/R + 3 delta/h
 //   Hertz (h << delta, h << R):    lambda2 = 3 - 3h/R - (4/3) h/delta + ...,  w_H = 3h/R + (4/3) h/delta
 // with |lambda1 - limit| <= w/2 in each case. The Poiseuille-Hertz crossover delta = h sits at
-// kappa = alpha sqrt(2) (h/R) sqrt(h-bar/R + h/R) -> 2 alpha (h/R)^(3/2) for h << R (the paper: kappa ~
-// (h/R)^(3/2)).
+//   kappa = alpha sqrt(2) (h/R) sqrt(h-bar/R + h/R) -> 2 alpha (h/R)^(3/2) for h << R
+// (the paper: kappa ~ (h/R)^(3/2)).
 #pragma once
 
 #include "sd/approach.hpp"

@@ -62,8 +62,8 @@ inline double effective_bulk_modulus(double eta, double K_shell)
 }
 
 // Characteristic scales of diametral compression, eqs. (30)-(37), with R the initial radius R0:
-// F* = k_b/R (30), M* = F* l (32), F** = M^Y/l (33), p* = F*/(s l), p** = F**/(s l), sigma* = F*/(2 R s)
-// (37).
+//   F* = k_b/R (30),  M* = F* l (32),  F** = M^Y/l (33),
+//   p* = F*/(s l),  p** = F**/(s l),  sigma* = F*/(2 R s) (37).
 struct CharacteristicScales
 {
     double F_star, M_star, F_2star, p_star, p_2star, sigma_star;

@@ -90,9 +90,10 @@ Scalar link_energy(const CohesiveLink& link, const CohesiveLaw& law, const Eigen
     return Scalar(0.5 * law.k_n) * u_n * u_n + Scalar(0.5 * law.k_t) * u_t * u_t;
 }
 
-// Forces -dW/dx on the four vertices [N] and the link forces f_n, f_t. With G = dW/dm = (f_n tau + f_t g) n /
-// L (the frame turns with m): F_b = f_n n - f_t t + G/2, F_a = -f_n n + f_t t + G/2, F_a' = F_b' = -G/2. They
-// sum to zero (Newton's third law) and their moment vanishes (W is rotation invariant).
+// Forces -dW/dx on the four vertices [N] and the link forces f_n, f_t. With (the frame turns with m)
+//   G = dW/dm = (f_n tau + f_t g) n / L,
+//   F_b = f_n n - f_t t + G/2,  F_a = -f_n n + f_t t + G/2,  F_a' = F_b' = -G/2.
+// They sum to zero (Newton's third law) and their moment vanishes (W is rotation invariant).
 struct LinkForces
 {
     double f_n = 0, f_t = 0;

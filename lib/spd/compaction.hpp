@@ -6,10 +6,10 @@
 // (relax, 5% of the critical damping of the ring's ovalisation mode) with the set's core stiffness eta and
 // plasticity off, until the largest unbalanced force on a free vertex is below rest_tolerance times the
 // particle weight; (3) gravity is removed, plasticity switched on, the top wall placed in contact with the
-// highest ring (H = H0) and moved down at constant speed to eps = ln(H0/H) = strain_max (or until sigma =
-// stress_max sigma*), then up at the same speed back to H0 (unloading). Time step 0.25 dt_c (decision
-// spd-compaction-time-step). The packing of step (1) is a
-// deterministic function of the seed, so the parameter sets of Fig. 27 share it exactly.
+// highest ring (H = H0) and moved down at constant speed to eps = ln(H0/H) = strain_max (or until
+// sigma = stress_max sigma*), then up at the same speed back to H0 (unloading). Time step 0.25 dt_c
+// (decision spd-compaction-time-step). The packing of step (1) is a deterministic function of the seed, so
+// the parameter sets of Fig. 27 share it exactly.
 //
 // Measures: sigma = top-wall force / (W s), sigma* = F*/(2 R s), F* = k_b/R (eq. 37, R the mean radius);
 // V_s = sum of the particle areas A_i + P_i r + pi r^2 (each shell polygon dilated by the vertex radius r,

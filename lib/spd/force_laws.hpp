@@ -1,4 +1,19 @@
-// SPD force laws as pure functions (Trivino et al., sections 2.2-2.4). Compression counted positive.
+// SPD force laws as pure functions (Trivino et al., sections 2.2-2.4):
+//
+//   X <- clamp(X + dX, -P, P)                          elastic-perfectly plastic update, eq. (2)
+//   dF = k_s dc,  dM = k_b dtheta  (with eq. (2))      stretch (dc: contraction) and hinge, eqs. (1), (3)
+//   f_n = k_n max(0, (r_i + r_j) - distance)           normal contact, eq. (6)
+//   f_t <- clamp(f_t - k_t du_t, -mu f_n, mu f_n)      Coulomb friction, eq. (7)
+//   |F| = M/l_(k-1,k), M/l_(k,k+1) normal to elements  torque as two couples, eqs. (8)-(9)
+//   w_k = (l - a)/l,  w_(k+1) = a/l                    force on an element to its end vertices, Fig. 5
+//
+// Sign: compression, contraction and overlap counted positive (section 2.2); angles and torques
+// counter-clockwise positive. Units: SI, forces [N], torques [N m], lengths [m], k_s, k_n, k_t [N/m],
+// k_b [N m/rad]. Deliberate departures from the text (the clamp of eq. (2), the sign of eq. (6), the
+// magnitude of eq. (8)) are described at each function with their decisions.
+// Valid for thresholds P >= 0 and mu f_n >= 0 (std::clamp needs -P <= P), elements of non-zero length,
+// 0 <= a <= l, and increments small enough that an element turns by less than pi between two
+// evaluations (rotations are read in (-pi, pi]).
 #pragma once
 
 #include "core/vector.hpp"

@@ -14,17 +14,17 @@ struct RingSetup
 {
     int nodes = 128;
     double radius = 1; // R0 [m]
-    ShellMaterial material{1e6, 0.3, 0.02,
-                           0.1}; // E [Pa], nu, h [m], s [m], sigma_Y unused (see plastic_ratio)
-    double eta = 0;              // K_Omega / K_shell, eq. (24)
-    double plastic_ratio =
-        INFINITY;           // M_b^Y / M*, eq. (32); stretch stays elastic (decision spd-ring-plasticity)
+    // E [Pa], nu, h [m], s [m], sigma_Y unused (see plastic_ratio).
+    ShellMaterial material{1e6, 0.3, 0.02, 0.1};
+    double eta = 0; // K_Omega / K_shell, eq. (24)
+    // M_b^Y / M*, eq. (32); stretch stays elastic (decision spd-ring-plasticity).
+    double plastic_ratio = INFINITY;
     double dt_factor = 0.5; // dt / dt_c
     double vertex_mass = 1; // m [kg]
 };
 
-// The ring's laws and scales: k_s, k_b from eqs. (10)-(11) with l0 = 2 R0 sin(pi/N); M_b^Y = plastic_ratio
-// M*.
+// The ring's laws and scales: k_s, k_b from eqs. (10)-(11) with l0 = 2 R0 sin(pi/N);
+// M_b^Y = plastic_ratio M*.
 struct RingScales
 {
     ShellLaws laws;
@@ -68,8 +68,8 @@ struct CompressionState
     double core_pressure;                  // p [Pa]
     int contact_vertices;                  // N'
     bool loading;
-    std::vector<double> profile_x,
-        profile_pressure;                 // top-wall contact vertices: x - x_centre [m], f/(s l0) [Pa]
+    // Top-wall contact vertices: x - x_centre [m], f/(s l0) [Pa].
+    std::vector<double> profile_x, profile_pressure;
     std::vector<double> shape_x, shape_y; // all ring vertices [m]
 };
 

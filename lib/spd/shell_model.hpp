@@ -116,12 +116,13 @@ class ShellModel
     // Largest stable time step of the scheme (decision spd-stability-limit): min(dt_c, the limit of the
     // damped normal contact). The contact damping c_n enters with the half-step velocity, so a vertex on a
     // wall is the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v' (omega^2 = k_n/m,
-    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4: h < (sqrt(gamma^2 + 4 omega^2) -
-    // gamma)/omega^2, i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m
-    // k_n). Two free shells can touch vertex to vertex: each vertex then lies within reach of the other's
-    // element end, so the contact is counted both ways, and the relative motion of the two vertices (reduced
-    // mass m/2) sees 2 k_n and 2 c_n: omega^2 = 4 k_n/m, gamma = 4 c_n/m, the limit (sqrt(5) - 2)
-    // sqrt(m/k_n) = 0.236 sqrt(m/k_n) for the critical c_n (decision spd-vertex-pair-stability). Above it the
+    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4:
+    //   h < (sqrt(gamma^2 + 4 omega^2) - gamma)/omega^2,
+    // i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m k_n). Two free
+    // shells can touch vertex to vertex: each vertex then lies within reach of the other's element end, so
+    // the contact is counted both ways, and the relative motion of the two vertices (reduced mass m/2) sees
+    // 2 k_n and 2 c_n: omega^2 = 4 k_n/m, gamma = 4 c_n/m, the limit (sqrt(5) - 2) sqrt(m/k_n)
+    // = 0.236 sqrt(m/k_n) for the critical c_n (decision spd-vertex-pair-stability). Above it the
     // pair flips at every step, a limit cycle that the one-sided normal force keeps bounded.
     double stable_time_step() const;
     // Throws NumericalError (exit 3) naming dt, the limit and dt_c if dt > stable_time_step().
@@ -140,8 +141,8 @@ class ShellModel
     // [Pa].
     double core_pressure(int shell) const { return core_p_[shell]; }
     double kinetic_energy() const;
-    double
-    max_free_force() const; // largest unbalanced force on a free degree of freedom, damping excluded [N]
+    // Largest unbalanced force on a free degree of freedom, damping excluded [N].
+    double max_free_force() const;
     int max_free_force_vertex() const;        // the vertex holding max_free_force()
     std::string describe_vertex(int i) const; // "vertex i of particle p", for diagnoses
     Vec2 vertex(int i) const { return {x_[2 * i], x_[2 * i + 1]}; }

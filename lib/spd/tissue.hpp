@@ -125,8 +125,8 @@ struct PullSetup
 {
     double pull_rate = 5e-6; // dH/dt / H0 in units of 1/t_c, t_c = sqrt(m/k_s)
     double strain_max = 0.3; // ln(H/H0) at the end, unless the tissue fails first
-    double stop_fraction =
-        0.02;                // stop once no intact path joins the clamps and sigma < stop_fraction sigma_max
+    // Stop once no intact path joins the clamps and sigma < stop_fraction sigma_max.
+    double stop_fraction = 0.02;
     double damping = 0.02;   // global viscous damping over 2 sqrt(m k_s)
     double dt_factor = 0.25; // dt/dt_c
     int records = 2000;

@@ -244,8 +244,8 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     write_links(ctx, tissue, R);
     // Fig. 31: the measured forces at which one link breaks in pure opening (mode I) and in shear under the
     // compression f_n = |f_n^0|/2 (the contact law, which acts between linked cells too, holds an overlap of
-    // |f_n^0|/(2 k_n) = 0.48 (r_i + r_j) at the default cohesion; |f_n^0|/k_n would exceed its 0.95 (r_i +
-    // r_j)), against eq. (39); increments of 7e-4 of the threshold per step.
+    // |f_n^0|/(2 k_n) = 0.48 (r_i + r_j) at the default cohesion; |f_n^0|/k_n would exceed its
+    // 0.95 (r_i + r_j)), against eq. (39); increments of 7e-4 of the threshold per step.
     const CohesiveLaw& law0 = tissue.model.link_law();
     const double dt_probe = pulling.dt_factor * tissue.model.critical_time_step();
     const LinkBreak mode_one =

@@ -1,9 +1,17 @@
-// Pairwise contact (stabilisation) energy of VSM (Frenning 2022, eqs. (49)-(50), section 2.6).
+// Pairwise contact (stabilisation) energy of VSM (Frenning 2022, eqs. (49)-(50), sections 2.6 and 4).
 //
-// U_ab = 1/2 K^n |u^n|^2 + 1/2 K^t |u^t|^2, u = x~_ab - y~_ab the local (non-affine) bond displacement,
-// K^n = xi_n E A_ab / L_ab, K^t = xi_t G A_ab / L_ab with reference face area and branch length [N/m].
-// The normal direction n is x~_ab / |x~_ab| for two real particles (so U depends on x~ also through n) and
-// the fixed boundary normal for a ghost. Energies in J, gradients in N.
+//   U_ab = 1/2 K^n |u^n|^2 + 1/2 K^t |u^t|^2 = 1/2 K^t |u|^2 + 1/2 (K^n - K^t) (u.n)^2     (49)
+//   K^n = xi_n E A_ab / L_ab,  K^t = xi_t G A_ab / L_ab                                    (50)
+//
+// u = x~_ab - y~_ab the local (non-affine) bond displacement, eqs. (29)-(30), u^n = (u.n) n, u^t = u - u^n;
+// A_ab the reference face area, L_ab = |X_ab| the reference branch length, G = mu. The normal direction n
+// is x~_ab / |x~_ab| for two real particles (so U depends on x~ also through n) and the fixed boundary
+// normal for a ghost.
+// Sign: U >= 0; the functions return gradients dU/d(.), the forces are their negatives. The bond resists
+// opening and closing alike (no tension cut-off, it never breaks).
+// Units: E, G [Pa], A_ab [m^2], L_ab and u [m], K [N/m]; energies in J, gradients in N.
+// Valid for xi_n, xi_t >= 0, |x~_ab| > 0 for a real pair (n is undefined when the two particles coincide)
+// and a unit boundary normal for a ghost.
 #pragma once
 
 #include "core/vector.hpp"

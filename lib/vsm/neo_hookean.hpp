@@ -1,9 +1,12 @@
-// Neo-Hookean mean stress of VSM (Frenning 2022, eq. (48)).
+// Neo-Hookean mean stress of VSM (Frenning 2022, eq. (48), section 4).
 //
-// U(F) = (lambda/2)(ln J)^2 - mu ln J + (mu/2)(tr C - 3), C = F^T F, J = det F   [energy per reference
-// volume, Pa] P(F) = dU/dF = mu (F - F^-T) + lambda ln J F^-T                              [first
-// Piola-Kirchhoff stress, Pa] Valid for J > 0 only; callers check J and report J <= 0 as a numerical failure
-// (the particle is inverted).
+//   U(F) = (lambda/2)(ln J)^2 - mu ln J + (mu/2)(tr C - 3),  C = F^T F,  J = det F     (48)
+//   P(F) = dU/dF = mu (F - F^-T) + lambda ln J F^-T
+//
+// U: strain energy per reference volume [J/m^3 = Pa]; P: first Piola-Kirchhoff (nominal) stress [Pa];
+// lambda, mu: Lame parameters [Pa]. Sign: tension positive (P N is the traction on a reference face of
+// outward normal N); U = 0 and P = 0 at F = I.
+// Valid for J > 0 only; callers check J and report J <= 0 as a numerical failure (the particle is inverted).
 #pragma once
 
 #include <Eigen/Core>

@@ -5,8 +5,7 @@
 // stress P(F).
 //   A: every particle at its exact position, displacement prescribed on every face; error = max_a |f_a| [N].
 //   B: displacement prescribed on every face (total ghosts, D = I), particles free; ramped over ramp_time
-//   with
-//      damping, held for hold_time; error = max_a |x_a - x_exact(X_a)| [m].
+//      with damping, held for hold_time; error = max_a |x_a - x_exact(X_a)| [m].
 //   C: displacement prescribed on X3 = 0, nominal traction P(F) N on the other five faces; error as in B.
 #pragma once
 

@@ -2,9 +2,9 @@
 //
 // Specimen 0 <= X1 <= 1 m (width), 0 <= X2 <= 0.5 m (height), 0 <= X3 <= 0.1 m (thickness). A rigid punch
 // moves the middle third of the top face X2 = 0.5 down at 0.1 m/s without slip (total displacement BC); the
-// rest of the top face is free; every other face is symmetric (zero normal displacement). Neo-Hookean E = 1
-// MPa, nu = 0.45; artificial viscosity c1 = c2 = 0.1, eq. (51); contact stabilisation xi_n = xi_t = xi, eq.
-// (50).
+// rest of the top face is free; every other face is symmetric (zero normal displacement). Neo-Hookean
+// E = 1 MPa, nu = 0.45; artificial viscosity c1 = c2 = 0.1, eq. (51); contact stabilisation
+// xi_n = xi_t = xi, eq. (50).
 #pragma once
 
 #include "vsm/dynamics.hpp"

@@ -161,8 +161,8 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
             const int row = free_rows_[ua][static_cast<std::size_t>(g.slot)];
             if (row < 0) continue;
             const Mat3 free_part = I - g.D;
-            // (I - D) x'_ab with x'_ab = sum_{c in I'} K'_abc (x_c - x_a) + sum_{c in E'} K'_abc xbar_ac, eq.
-            // (23).
+            // (I - D) x'_ab with, eq. (23),
+            //   x'_ab = sum_{c in I'} K'_abc (x_c - x_a) + sum_{c in E'} K'_abc xbar_ac.
             for (int c = 0; c < m; ++c) {
                 const double coefficient = Kp(row, c);
                 if (coefficient == 0) continue;
@@ -173,8 +173,8 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
                         add_term(*terms, a, -coefficient * free_part, B, V);
                     }
                 } else {
-                    add_term(full, a, -2.0 * coefficient * free_part, B,
-                             V); // xbar_ac = 2 (w_ac - x_a), eq. (68)
+                    // xbar_ac = 2 (w_ac - x_a), eq. (68)
+                    add_term(full, a, -2.0 * coefficient * free_part, B, V);
                 }
             }
         }
@@ -299,9 +299,10 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
                 "above the stability limit, or missing stabilisation (xi = 0)");
         }
         P[static_cast<std::size_t>(a)] = neo_hookean_stress(F[static_cast<std::size_t>(a)], lame); // eq. (48)
+        // Artificial viscosity, eq. (51).
         if (v && (options_.c1 > 0 || options_.c2 > 0))
             P[static_cast<std::size_t>(a)] +=
-                viscous_stress(F[static_cast<std::size_t>(a)], deformation_rate(x, *v, a, t), a); // eq. (51)
+                viscous_stress(F[static_cast<std::size_t>(a)], deformation_rate(x, *v, a, t), a);
     }
 
     Points<3> f = Points<3>::Zero(3, n);

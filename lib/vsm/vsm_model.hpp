@@ -127,8 +127,8 @@ class Model
     template <class OnReal, class OnGhost>
     void for_each_contact(const Points<3>& x, const std::vector<Mat3>& F, double t, OnReal&& on_real,
                           OnGhost&& on_ghost) const;
-    Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label,
-                           double t) const; // xbar_ab, section 2.4
+    // xbar_ab, section 2.4.
+    Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label, double t) const;
 
     ReferenceCells cells_;
     Domain domain_;
