@@ -4,8 +4,6 @@
 #include "dpm/modes.hpp"
 #include "dpm/spring_network.hpp"
 
-#include <gsl/gsl_fit.h>
-
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -150,19 +148,6 @@ double cylinder_compression(double force_tilde, double d_tilde)
 {
     const double pi = std::numbers::pi;
     return 4 * force_tilde * d_tilde / pi * (1 + std::log(pi / (d_tilde * d_tilde * d_tilde * force_tilde)));
-}
-
-std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
-{
-    if (x.size() < 3) return std::nullopt;
-    std::vector<double> lx, ly;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        lx.push_back(std::log(x[k]));
-        ly.push_back(std::log(y[k]));
-    }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-    return c1;
 }
 
 } // namespace softgrain::dpm

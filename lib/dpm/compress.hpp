@@ -112,7 +112,4 @@ CompressionResult compress_spring_network(const CompressionOptions& options,
 // F~ D~ = f (1 - nu^2)/(E D). Valid for F~ D~^3 << pi (small contact width).
 double cylinder_compression(double force_tilde, double d_tilde);
 
-// Exponent of y ~ x^e: the least-squares slope of ln y against ln x (GSL); none with fewer than 3 points.
-std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
-
 } // namespace softgrain::dpm

@@ -5,6 +5,7 @@
 #include "dpm/compress3d_scene.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "dpm/compress3d.hpp"
 #include "dpm/compress_scene.hpp"
@@ -27,7 +28,7 @@ std::optional<double> exponent_in_window(const CompressionResult& r, double low,
             delta.push_back(s.delta_over_d);
             force.push_back(s.force);
         }
-    return log_log_slope(delta, force);
+    return fit_power_law_exponent(delta, force, minimum_exponent_points);
 }
 
 // The exponent fitted to the samples in which only the pole vertex touches the top plate.
@@ -39,7 +40,7 @@ std::optional<double> pole_contact_exponent(const CompressionResult& r)
             delta.push_back(s.delta_over_d);
             force.push_back(s.force);
         }
-    return log_log_slope(delta, force);
+    return fit_power_law_exponent(delta, force, minimum_exponent_points);
 }
 
 } // namespace

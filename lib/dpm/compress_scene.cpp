@@ -3,6 +3,7 @@
 // exponents.
 #include "dpm/compress_scene.hpp"
 
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "dpm/compress.hpp"
 #include "dpm/spring_network.hpp"
@@ -79,9 +80,11 @@ void run_compress2d(const Parameters& p, RunContext& context)
     s["diameter"] = r.diameter;
     s["E"] = E;
     s["nu"] = nu;
-    s["small_strain_exponent"] = value_or_null(log_log_slope(fit_delta, fit_force));
+    s["small_strain_exponent"] =
+        value_or_null(fit_power_law_exponent(fit_delta, fit_force, minimum_exponent_points));
     // The exponent of eq. (9.14) over the same forces: its local slope 1 + 1/(1 + ln(pi/(D~^3 F~))) > 1.
-    s["eq_9_14_exponent"] = value_or_null(log_log_slope(fit_delta_cylinder, fit_force));
+    s["eq_9_14_exponent"] =
+        value_or_null(fit_power_law_exponent(fit_delta_cylinder, fit_force, minimum_exponent_points));
     if (network) {
         s["network_nodes"] = o.network_nodes;
         s["network_springs"] = r.springs;

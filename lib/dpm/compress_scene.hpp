@@ -14,6 +14,10 @@ class RunContext;
 
 namespace softgrain::dpm {
 
+// The compression scenes report a force-displacement exponent from three samples on: two fit any power law
+// exactly, so they would report a number that nothing checks.
+constexpr std::size_t minimum_exponent_points = 3;
+
 void run_compress2d(const Parameters& p, RunContext& context);
 std::vector<ParameterSpec> compress2d_parameters();
 

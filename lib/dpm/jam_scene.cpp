@@ -2,11 +2,10 @@
 // phi - phi_c, phi_c and the bulk modulus B of <P> = B (phi - phi_c).
 #include "dpm/jam_scene.hpp"
 
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/vtk_frames.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <cmath>
 
@@ -60,14 +59,12 @@ void run_jam(const Parameters& p, RunContext& context)
                                                  {"dphi", "1", "phi - phi_c"},
                                                  {"P", "k_c or k_a a0", "pressure Tr(Sigma)/2, eq. (9.26)"},
                                                  {"decompression", "1", "0 compression, 1 decompression"}});
-    std::vector<double> dphi, pressure, log_dphi, log_p;
+    std::vector<double> dphi, pressure;
     for (const JamState& s : r.states) {
         table.row({s.phi, s.phi - phi_c, s.pressure, s.decompression ? 1.0 : 0.0});
         if (&s == &r.states.front() || s.decompression) continue; // the fits: the compression branch
         dphi.push_back(s.phi - phi_c);
         pressure.push_back(s.pressure);
-        log_dphi.push_back(std::log(s.phi - phi_c));
-        log_p.push_back(std::log(s.pressure));
     }
     auto& s = context.summary();
     s["phi_c"] = phi_c;
@@ -81,18 +78,10 @@ void run_jam(const Parameters& p, RunContext& context)
         s["phi_c_decompression"] = nullptr;
         s["phi_c_shift"] = nullptr;
     }
-    if (dphi.size() >= 2) {
-        double b = 0, cov = 0, sumsq = 0;
-        gsl_fit_mul(dphi.data(), 1, pressure.data(), 1, dphi.size(), &b, &cov, &sumsq); // P = B dphi
-        s["bulk_modulus"] = b;
-        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0;
-        gsl_fit_linear(log_dphi.data(), 1, log_p.data(), 1, log_dphi.size(), &c0, &c1, &c00, &c01, &c11,
-                       &sumsq);
-        s["pressure_exponent"] = c1;
-    } else {
-        s["bulk_modulus"] = nullptr;
-        s["pressure_exponent"] = nullptr;
-    }
+    // Both from two states on: P = B dphi through the origin, and the exponent of P against dphi.
+    const bool fitted = dphi.size() >= 2;
+    s["bulk_modulus"] = value_or_null(fitted ? fit_slope_through_origin(dphi, pressure) : std::nullopt);
+    s["pressure_exponent"] = value_or_null(fit_power_law_exponent(dphi, pressure));
 }
 
 std::vector<ParameterSpec> jam_parameters()

@@ -1,9 +1,8 @@
 #include "dpm/shear_modulus.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "dpm/stress.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <sstream>
 #include <string>
@@ -31,9 +30,7 @@ ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorX
         strain.push_back(step * dgamma);
         out.shear_stress.push_back(packing.stress(x));
     }
-    double c0 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
-    gsl_fit_linear(strain.data(), 1, out.shear_stress.data(), 1, strain.size(), &c0, &out.modulus, &c00, &c01,
-                   &c11, &sumsq);
+    out.modulus = fit_line(strain, out.shear_stress).value().slope; // steps >= 1: two points at least
     return out;
 }
 

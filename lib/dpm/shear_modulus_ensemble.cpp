@@ -1,8 +1,7 @@
 #include "dpm/shear_modulus_ensemble.hpp"
 
+#include "core/fits.hpp"
 #include "core/output.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <cmath>
 #include <exception>
@@ -50,23 +49,20 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
     }
     auto& mean = context.table(
         tables.mean, {{"P", unit, "ensemble mean pressure"}, {"G", unit, "ensemble mean shear modulus <G>"}});
-    std::vector<double> log_p, log_g;
+    std::vector<double> fitted_p, fitted_g;
     for (std::size_t l = 0; l < levels; ++l) {
         mean.row({mean_p[l], mean_g[l]});
         if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
-            log_p.push_back(std::log(mean_p[l]));
-            log_g.push_back(std::log(mean_g[l]));
+            fitted_p.push_back(mean_p[l]);
+            fitted_g.push_back(mean_g[l]);
         }
     }
     std::vector<double> slopes;
     for (const ModulusMember& m : members) {
-        std::vector<double> lp, lg;
+        std::vector<double> p, g;
         for (std::size_t l = 1; l < levels; ++l)
-            if (m.modulus[l] > 0) lp.push_back(std::log(m.pressure[l])), lg.push_back(std::log(m.modulus[l]));
-        if (lp.size() < 2) continue;
-        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
-        gsl_fit_linear(lp.data(), 1, lg.data(), 1, lp.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-        slopes.push_back(c1);
+            if (m.modulus[l] > 0) p.push_back(m.pressure[l]), g.push_back(m.modulus[l]);
+        if (const auto exponent = fit_power_law_exponent(p, g)) slopes.push_back(*exponent);
     }
     out.packings_with_slope = static_cast<int>(slopes.size());
     if (slopes.size() >= 2) {
@@ -79,11 +75,9 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
     }
     out.G_onset = mean_g.front();
     out.G_max_pressure = mean_g.back();
-    if (log_p.size() >= 2) {
-        double c0 = 0, c1 = 0, c00 = 0, c01 = 0, c11 = 0, sumsq = 0;
-        gsl_fit_linear(log_p.data(), 1, log_g.data(), 1, log_p.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-        out.eta = c1;
-        out.eta_error = std::sqrt(c11);
+    if (const auto line = fit_power_law(fitted_p, fitted_g)) {
+        out.eta = line->slope;
+        out.eta_error = std::sqrt(line->slope_variance);
     }
     return out;
 }

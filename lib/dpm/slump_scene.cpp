@@ -3,11 +3,10 @@
 // free-surface profile, layers at the front, wall-force balance.
 #include "dpm/slump_scene.hpp"
 
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "dpm/slump.hpp"
 #include "dpm/vtk_frames.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +22,8 @@ struct SurfaceFit
     double intercept = 0, slope = 0;    // height = intercept + slope centre
 };
 
-// Least-squares line through the topmost-vertex heights of the occupied bins of width D (GSL).
+// Least-squares line through the topmost-vertex heights of the occupied bins of width D (0, 0 below two
+// bins).
 SurfaceFit fit_surface(const Eigen::VectorXd& x, double diameter)
 {
     SurfaceFit fit;
@@ -33,10 +33,10 @@ SurfaceFit fit_surface(const Eigen::VectorXd& x, double diameter)
             fit.centre.push_back(k + 0.5);
             fit.height.push_back(top[k] / diameter);
         }
-    if (fit.centre.size() < 2) return fit;
-    double c00, c01, c11, sumsq;
-    gsl_fit_linear(fit.centre.data(), 1, fit.height.data(), 1, fit.centre.size(), &fit.intercept, &fit.slope,
-                   &c00, &c01, &c11, &sumsq);
+    if (const auto line = fit_line(fit.centre, fit.height)) {
+        fit.intercept = line->intercept;
+        fit.slope = line->slope;
+    }
     return fit;
 }
 

@@ -5,6 +5,7 @@
 #include "sd/sd_scenes.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "sd/approach.hpp"
 #include "sd/approach_analysis.hpp"
@@ -14,7 +15,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <gsl/gsl_fit.h>
 #include <numbers>
 #include <string>
 
@@ -252,12 +252,9 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
     sum["kappa_runs"] = count;
     sum["crossover_rel_error_max"] = relative_error_max;
     sum["crossover_points"] = log_h.size();
-    if (log_h.size() >= 2) {
-        double c0, c1, cov00, cov01, cov11, chisq;
-        gsl_fit_linear(log_h.data(), 1, log_kappa.data(), 1, log_h.size(), &c0, &c1, &cov00, &cov01, &cov11,
-                       &chisq);
-        sum["crossover_slope"] = c1;
-        sum["crossover_prefactor"] = std::exp(c0);
+    if (const auto line = fit_line(log_h, log_kappa)) {
+        sum["crossover_slope"] = line->slope;
+        sum["crossover_prefactor"] = std::exp(line->intercept);
     } else {
         sum["crossover_slope"] = nullptr;
         sum["crossover_prefactor"] = nullptr;

@@ -1,5 +1,6 @@
 // Scenes of SPD assemblies (Trivino et al., section 5): spd.bench, spd.compaction.
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
@@ -8,7 +9,6 @@
 #include "spd/spd_scenes.hpp"
 #include "spd/vtk_frames.hpp"
 
-#include <gsl/gsl_fit.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -79,15 +79,6 @@ void run_bench(const Parameters& p, RunContext& ctx)
     s["columns"] = columns;
     s["speed"] = speed;
     s["neighbour_skin"] = a.model.neighbour_skin();
-}
-
-// Slope and intercept of the least-squares line y = c0 + c1 x (GSL); NaN below two points.
-std::pair<double, double> least_squares_line(const std::vector<double>& x, const std::vector<double>& y)
-{
-    if (x.size() < 2) return {NAN, NAN};
-    double c0, c1, cov00, cov01, cov11, ss;
-    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &ss);
-    return {c0, c1};
 }
 
 // spd.compaction (section 5, Figs. 26-29): deposition under gravity, uniaxial loading to eps = strain_max
@@ -178,7 +169,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
             e_fit.push_back(void_ratio(st));
         }
     }
-    const auto [e0_fit, slope] = least_squares_line(log_sigma, e_fit);
+    const std::optional<Line> compressibility = fit_line(log_sigma, e_fit);
     auto& snapshot = ctx.table(
         "snapshot.dat",
         {{"snapshot", "1", "0: first contact of the top wall (H0), ..., last: end of loading (Figs. 26, 29)"},
@@ -209,8 +200,10 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     s["e_after_unloading"] = void_ratio(last);
     s["strain_at_max"] = end_of_loading->strain;
     s["sigma_over_sigmastar_max"] = sigma_max;
-    s["compressibility_index"] = finite_or_null(-slope);
-    s["compressibility_fit_e0"] = finite_or_null(e0_fit);
+    s["compressibility_index"] =
+        compressibility ? nlohmann::json(-compressibility->slope) : nlohmann::json(nullptr);
+    s["compressibility_fit_e0"] =
+        compressibility ? nlohmann::json(compressibility->intercept) : nlohmann::json(nullptr);
     s["compressibility_fit_points"] = log_sigma.size();
     s["dVs_over_dV_at_strain_max"] = finite_or_null(volume_share(*end_of_loading));
     s["dVs_over_dV_peak"] = dVs_peak;

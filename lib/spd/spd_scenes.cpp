@@ -2,14 +2,13 @@
 #include "spd/spd_scenes.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "spd/beam.hpp"
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
 #include "spd/shell_model.hpp"
 #include "spd/vtk_frames.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -107,14 +106,6 @@ void run_ring_pressure(const Parameters& p, RunContext& ctx)
     s["K_effective"] = total.K_measured;
     s["K_effective_theory"] = effective_bulk_modulus(setup.eta, sc.K_shell);
     s["volume_strain"] = total.volume_strain;
-}
-
-double fitted_slope(const std::vector<double>& x, const std::vector<double>& y)
-{
-    if (x.size() < 2) return NAN;
-    double c0, c1, cov00, cov01, cov11, ss;
-    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &ss);
-    return c1;
 }
 
 // The largest change of the least-squares slope over the abscissae x when each ordinate moves by at most
@@ -292,13 +283,13 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     }
     if (unload) write_shape(-1.0, 0.0, r.released_x, r.released_y);
     auto& s = ctx.summary();
-    s["contact_length_slope"] = finite_or_null(fitted_slope(eps_late, lc_late));
+    s["contact_length_slope"] = value_or_null(fit_line_slope(eps_late, lc_late));
     // The symmetric contact gains one vertex at each edge at a time: N' l0 - 2c stays within +-l0 of a
     // constant offset, which bounds the slope's departure from the elastica's.
     s["contact_length_slope_quantisation"] =
         finite_or_null(slope_error_bound(eps_late, l / (2 * setup.radius)));
     s["volume_deviation_max"] = volume_deviation;
-    s["force_contact_slope"] = finite_or_null(fitted_slope(lc_over_l, f_ratio));
+    s["force_contact_slope"] = value_or_null(fit_line_slope(lc_over_l, f_ratio));
     s["shape_residual_after_unload"] = unload ? nlohmann::json(r.shape_residual) : nlohmann::json(nullptr);
     const CompressionState* last = nullptr;
     for (const CompressionState& st : r.states)
@@ -382,7 +373,7 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     s["edge_zone_force_fraction_final"] = finite_or_null(final_shape.edge_zone_share);
     s["centre_pressure_over_pstar_final"] = final_shape.centre_pressure / sc.characteristic.p_star;
     if (elastica) {
-        s["elastica_contact_length_slope"] = finite_or_null(fitted_slope(eps_late, lc_late_elastica));
+        s["elastica_contact_length_slope"] = value_or_null(fit_line_slope(eps_late, lc_late_elastica));
         s["elastica_volume_deviation_max"] = el_volume_deviation;
         s["elastica_width_error_max"] = err_a;
         s["elastica_volume_error_max"] = err_V;

@@ -1,7 +1,7 @@
 // compare.ring: a thin elastic ring between two plates by SPD (eta = 0) and by the DPM shell (k_a = 0), both
 // from the same E, h, against the inextensible elastica (lib/spd/elastica.hpp). Decisions compare-ring-*.
 #include "compare/ring.hpp"
-#include "dpm/compress.hpp"
+#include "core/fits.hpp"
 #include "spd/elastica.hpp"
 #include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
@@ -63,8 +63,8 @@ TEST_CASE("both methods converge to the elastica at eps = 0.3 at second order [e
     // between vertices, so single errors scatter by up to a factor 3 about C N^-2; over ln(128/16) = 2.08
     // that moves a least-squares slope by up to ln 3/2.08 = 0.53. A first-order error (e.g. a hinge
     // stiffness off by O(l0)) gives slopes near 1 and fails.
-    const double spd_order = -*softgrain::dpm::log_log_slope(nodes, spd_errors);
-    const double dpm_order = -*softgrain::dpm::log_log_slope(nodes, dpm_errors);
+    const double spd_order = -*softgrain::fit_power_law_exponent(nodes, spd_errors);
+    const double dpm_order = -*softgrain::fit_power_law_exponent(nodes, dpm_errors);
     CHECK_CLOSE(spd_order, 2.0, (Tolerance{0, 0.55}));
     CHECK_CLOSE(dpm_order, 2.0, (Tolerance{0, 0.55}));
     // And the finest error lies within that scatter of the second-order line through the coarsest one.
