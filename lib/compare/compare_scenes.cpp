@@ -23,7 +23,7 @@ std::string strain_key(double eps)
     return "eps0" + std::to_string(std::lround(10 * eps));
 }
 
-void run_ring(const Parameters& p, RunContext& ctx)
+void run_ring(const Parameters& p, RunContext& context)
 {
     RingComparisonSetup setup;
     setup.method = ring_method_from_name(p.choice("model"));
@@ -36,12 +36,12 @@ void run_ring(const Parameters& p, RunContext& ctx)
     setup.strain_max = p.real("strain_max");
     setup.strain_step = p.real("strain_step");
     setup.relax_tolerance = p.real("relax_tolerance");
-    auto progress = ctx.progress("compare.ring");
+    auto progress = context.progress("compare.ring");
     const RingComparison r = compress_ring(setup, [&](double f) { progress.update(f); });
     progress.finish();
-    ctx.count_steps(r.steps);
+    context.count_steps(r.steps);
 
-    auto& table = ctx.table(
+    auto& table = context.table(
         "ring.dat",
         {{"eps", "1", "strain 1 - b/b0 (b: plate gap of the mid-line)"},
          {"F_R2_over_B", "1", "force on one plate F R^2/B, B = k_b l0"},
@@ -58,7 +58,7 @@ void run_ring(const Parameters& p, RunContext& ctx)
          {"contact_length_error", "1", "|L_c - 2c|/b0"}});
     RingErrors worst;
     bool observed = false; // a state at eps = 0.1, 0.2, ... (none when strain_max < 0.1)
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     for (const RingObservation& o : r.states) {
         if (o.strain <= 0) continue;
         const spd::ElasticaState el = spd::elastica_ring_between_plates(o.strain);

@@ -63,7 +63,7 @@ std::vector<ParameterSpec> integrator_parameters()
     };
 }
 
-void run_approach(const Parameters& p, RunContext& ctx)
+void run_approach(const Parameters& p, RunContext& context)
 {
     const double kappa = p.real("kappa");
     const ApproachProblem problem = pair_problem(kappa, p.real("h0"), p.real("h_min"));
@@ -83,10 +83,10 @@ void run_approach(const Parameters& p, RunContext& ctx)
         run = integrate_approach(problem, settings);
         seconds = std::min(seconds, seconds_since(start));
     }
-    ctx.count_steps(run.steps);
+    context.count_steps(run.steps);
     const ApproachAnalysis an = analyse_approach(problem, run.samples, p.real("regime_width"));
 
-    auto& table = ctx.table(
+    auto& table = context.table(
         "approach.dat",
         {{"t", "R/V", "time"},
          {"X", "R", "centre distance X"},
@@ -122,7 +122,7 @@ void run_approach(const Parameters& p, RunContext& ctx)
                    regime_width(Regime::hertz, R, s.h, s.rates.delta), modes.fast, modes.slow});
     }
 
-    auto& sum = ctx.summary();
+    auto& sum = context.summary();
     const auto regime = [&](const char* name, const std::optional<RegimePoint>& point) {
         const std::string key(name);
         sum["lambda1_" + key] = point ? nlohmann::json(point->lambda1) : nlohmann::json(nullptr);
@@ -176,7 +176,7 @@ void run_approach(const Parameters& p, RunContext& ctx)
     sum["gap_rate_derivative_max"] = rate_max / kappa;
 }
 
-void run_phase_diagram(const Parameters& p, RunContext& ctx)
+void run_phase_diagram(const Parameters& p, RunContext& context)
 {
     const double kappa_min = p.real("kappa_min"), kappa_max = p.real("kappa_max");
     const long long count = p.integer("kappa_count");
@@ -189,24 +189,24 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
     settings.tolerance = p.real("tolerance");
     settings.samples_per_decade = static_cast<double>(p.integer("samples_per_decade"));
 
-    auto& table =
-        ctx.table("phase_diagram.dat",
-                  {{"kappa", "1", "F_ext/(E R^2), eq. (6)"},
-                   {"h_start", "R", "initial gap"},
-                   {"h_end", "R", "final gap"},
-                   {"stokes_h_min", "R", "smallest h where w_Stokes <= regime_width (nan: none)"},
-                   {"stokes_h_max", "R", "largest such h"},
-                   {"poiseuille_h_min", "R", "smallest h where w_Poiseuille <= regime_width"},
-                   {"poiseuille_h_max", "R", "largest such h"},
-                   {"poiseuille_decades", "1", "log10(poiseuille_h_max/poiseuille_h_min), 0 if none"},
-                   {"hertz_h_min", "R", "smallest h where w_Hertz <= regime_width"},
-                   {"hertz_h_max", "R", "largest such h"},
-                   {"h_crossover", "R", "simulated h where delta = h"},
-                   {"kappa_crossover_exact", "1", "alpha sqrt 2 (h/R) sqrt(h-bar/R + h/R) at h_crossover"}});
+    auto& table = context.table(
+        "phase_diagram.dat",
+        {{"kappa", "1", "F_ext/(E R^2), eq. (6)"},
+         {"h_start", "R", "initial gap"},
+         {"h_end", "R", "final gap"},
+         {"stokes_h_min", "R", "smallest h where w_Stokes <= regime_width (nan: none)"},
+         {"stokes_h_max", "R", "largest such h"},
+         {"poiseuille_h_min", "R", "smallest h where w_Poiseuille <= regime_width"},
+         {"poiseuille_h_max", "R", "largest such h"},
+         {"poiseuille_decades", "1", "log10(poiseuille_h_max/poiseuille_h_min), 0 if none"},
+         {"hertz_h_min", "R", "smallest h where w_Hertz <= regime_width"},
+         {"hertz_h_max", "R", "largest such h"},
+         {"h_crossover", "R", "simulated h where delta = h"},
+         {"kappa_crossover_exact", "1", "alpha sqrt 2 (h/R) sqrt(h-bar/R + h/R) at h_crossover"}});
     std::vector<double> log_h, log_kappa, decades;
     double relative_error_max = 0, kappa_vanishes = NAN, kappa_last_window = NAN;
     long total_steps = 0;
-    auto progress = ctx.progress("sd.phase_diagram");
+    auto progress = context.progress("sd.phase_diagram");
     for (long long i = 0; i < count; ++i) {
         const double kappa =
             kappa_min * std::pow(kappa_max / kappa_min, static_cast<double>(i) / (count - 1));
@@ -238,17 +238,17 @@ void run_phase_diagram(const Parameters& p, RunContext& ctx)
         progress.update(static_cast<double>(i + 1) / static_cast<double>(count));
     }
     progress.finish();
-    ctx.count_steps(total_steps);
+    context.count_steps(total_steps);
 
-    auto& lines = ctx.table("crossover_lines.dat",
-                            {{"h", "R", "gap"},
-                             {"kappa_exact", "1", "delta = h: alpha sqrt2 (h/R) sqrt(h-bar/R + h/R)"},
-                             {"kappa_asymptotic", "1", "2 alpha (h/R)^(3/2)"}});
+    auto& lines = context.table("crossover_lines.dat",
+                                {{"h", "R", "gap"},
+                                 {"kappa_exact", "1", "delta = h: alpha sqrt2 (h/R) sqrt(h-bar/R + h/R)"},
+                                 {"kappa_asymptotic", "1", "2 alpha (h/R)^(3/2)"}});
     const Material m;
     for (double h = 1e-7; h <= 1.0 + 1e-12; h *= std::pow(10.0, 0.1))
         lines.row({h, crossover_kappa_paper(m, h), crossover_kappa_asymptotic(m, h)});
 
-    auto& sum = ctx.summary();
+    auto& sum = context.summary();
     sum["kappa_runs"] = count;
     sum["crossover_rel_error_max"] = relative_error_max;
     sum["crossover_points"] = log_h.size();
@@ -291,7 +291,7 @@ void require_approach_completed(double gap_final, double h_min, long steps)
                                  " R by the pair reference's approach time");
 }
 
-void run_many(const Parameters& p, RunContext& ctx)
+void run_many(const Parameters& p, RunContext& context)
 {
     const long long n = p.integer("particles");
     const bool line = p.choice("geometry") == "line";
@@ -351,10 +351,10 @@ void run_many(const Parameters& p, RunContext& ctx)
     long steps = 0;
     const std::vector<ManySample> samples =
         integrate_many(system, positions, gaps, times, h_min, p.real("tolerance"), delta0, steps);
-    ctx.count_steps(steps);
+    context.count_steps(steps);
     // ParaView frames, one per output sample (--vtk-every N: every N-th) as in many.dat, time value t in
     // R/V: the particles and the pairs, field data time t [s] and gap_min h [m].
-    if (auto* series = ctx.vtk())
+    if (auto* series = context.vtk())
         for (const ManySample& s : samples) {
             if (!series->next()) continue;
             std::vector<vtk::Part> parts = many_particle_frame(system, s);
@@ -371,7 +371,7 @@ void run_many(const Parameters& p, RunContext& ctx)
     for (long long i = 0; i < n; ++i)
         for (int c = 0; c < system.dimension; ++c)
             columns.push_back({"v_" + std::to_string(i) + (c == 0 ? "x" : "y"), "V", "centre velocity"});
-    auto& table = ctx.table("many.dat", columns);
+    auto& table = context.table("many.dat", columns);
 
     double mean_velocity_max = 0, symmetry_max = 0, pair_error_max = 0, balance_max = 0, residual_max = 0;
     std::vector<double> t_ref(system.bonds.size(), 0.0), previous_h(system.bonds.size(), h0);
@@ -405,7 +405,7 @@ void run_many(const Parameters& p, RunContext& ctx)
     }
     const double gap_final = *std::min_element(samples.back().gaps.begin(), samples.back().gaps.end());
     require_approach_completed(gap_final, h_min, steps);
-    auto& sum = ctx.summary();
+    auto& sum = context.summary();
     sum["particles"] = n;
     sum["bonds"] = system.bonds.size();
     sum["pair_force"] = pair_force;

@@ -25,14 +25,14 @@ using namespace spd;
 // each launched with a random rigid velocity of 0.02 r per time step (r the vertex radius), `steps`
 // undamped-in-the-bulk velocity-Verlet steps (contact damping only): rings collide, bend and rearrange,
 // the neighbour list is rebuilt every few tens of steps. Reports vertex-steps per second of the step loop.
-void run_bench(const Parameters& p, RunContext& ctx)
+void run_bench(const Parameters& p, RunContext& context)
 {
     AssemblySetup setup;
     setup.particles = static_cast<int>(p.integer("particles"));
     setup.ring.nodes = static_cast<int>(p.integer("nodes"));
     setup.seed = static_cast<std::uint64_t>(p.integer("seed"));
     setup.ring.dt_factor = p.real("dt_factor");
-    ctx.record_seed(setup.seed);
+    context.record_seed(setup.seed);
     const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(setup.particles))));
     Assembly a = rings_in_box(setup, columns);
     const double dt = setup.ring.dt_factor * a.model.critical_time_step();
@@ -55,9 +55,9 @@ void run_bench(const Parameters& p, RunContext& ctx)
     for (long n = 1; n < steps; ++n)
         a.model.step(dt, 0.0);
     const double seconds = seconds_since(start);
-    ctx.count_steps(steps);
+    context.count_steps(steps);
     const int vertices = particle_vertices(a);
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     s["vertex_steps_per_second"] = vertices * static_cast<double>(steps - 1) / seconds;
     s["vertices"] = vertices;
     s["threads"] = omp_get_max_threads();
@@ -83,7 +83,7 @@ void run_bench(const Parameters& p, RunContext& ctx)
 
 // spd.compaction (section 5, Figs. 26-29): deposition under gravity, uniaxial loading to eps = strain_max
 // at constant top-wall speed, unloading back to H0 (lib/spd/compaction.hpp).
-void run_compaction(const Parameters& p, RunContext& ctx)
+void run_compaction(const Parameters& p, RunContext& context)
 {
     CompactionSetup setup;
     setup.assembly.particles = static_cast<int>(p.integer("particles"));
@@ -103,21 +103,22 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     if (ring.material.h >= 0.5 * ring.radius)
         throw InputError("h = " + std::to_string(ring.material.h) +
                          ": the shell must be thin against the ring; allowed: h < 0.5 R = 0.5 m");
-    ctx.record_seed(setup.assembly.seed);
+    context.record_seed(setup.assembly.seed);
     const RingScales sc = ring_scales(ring);
     const double R = ring.radius, s_depth = ring.material.s, sigma_star = sc.characteristic.sigma_star;
-    auto progress = ctx.progress("spd.compaction");
+    auto progress = context.progress("spd.compaction");
     // ParaView frames at the recorded states (`records` per half cycle), the time since the top wall
     // started to move as the time value.
     const auto frame = [&](const Assembly& a, const CompactionState& st) {
-        if (ctx.vtk() && ctx.vtk()->next())
-            ctx.vtk()->write(st.time, shell_frame(a.model, a.particles, {a.bottom, a.top, a.left, a.right},
-                                                  {{"strain", st.strain},
-                                                   {"height", st.height},
-                                                   {"loading", st.loading ? 1.0 : 0.0}}));
+        if (context.vtk() && context.vtk()->next())
+            context.vtk()->write(
+                st.time,
+                shell_frame(
+                    a.model, a.particles, {a.bottom, a.top, a.left, a.right},
+                    {{"strain", st.strain}, {"height", st.height}, {"loading", st.loading ? 1.0 : 0.0}}));
     };
     const CompactionResult r = compaction(
-        setup, frame, [&](double f) { progress.update(f); }, ctx.checkpoints());
+        setup, frame, [&](double f) { progress.update(f); }, context.checkpoints());
     // Quasi-static check: largest |F_top - F_bottom| over the loading, relative to the largest top force.
     double mismatch = 0, force_max = 0;
     for (const CompactionState& st : r.states)
@@ -127,7 +128,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
         }
     mismatch /= force_max;
     progress.finish();
-    ctx.count_steps(r.steps); // the model counts the deposit steps too
+    context.count_steps(r.steps); // the model counts the deposit steps too
     const double W = r.width, A0 = r.solid_area0;
     const auto void_ratio = [&](const CompactionState& st) {
         return (W * st.height - st.solid_area) / st.solid_area;
@@ -135,7 +136,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
     const auto volume_share = [&](const CompactionState& st) {
         return st.height < r.height0 ? (A0 - st.solid_area) / (W * (r.height0 - st.height)) : NAN;
     };
-    auto& table = ctx.table(
+    auto& table = context.table(
         "compaction.dat",
         {{"eps", "1", "vertical strain ln(H0/H)"},
          {"loading", "1", "1 loading, 0 unloading"},
@@ -170,7 +171,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
         }
     }
     const std::optional<Line> compressibility = fit_line(log_sigma, e_fit);
-    auto& snapshot = ctx.table(
+    auto& snapshot = context.table(
         "snapshot.dat",
         {{"snapshot", "1", "0: first contact of the top wall (H0), ..., last: end of loading (Figs. 26, 29)"},
          {"eps", "1", "ln(H0/H) of the snapshot"},
@@ -192,7 +193,7 @@ void run_compaction(const Parameters& p, RunContext& ctx)
                               W_mean > 0 ? snap.energy[i] / W_mean : NAN});
             }
     }
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     const CompactionState& first = r.states.front();
     const CompactionState& last = r.states.back();
     s["e0"] = void_ratio(first);

@@ -35,7 +35,7 @@ std::vector<ParameterSpec> material_parameters(double h)
     };
 }
 
-void run_beam(const Parameters& p, RunContext& ctx)
+void run_beam(const Parameters& p, RunContext& context)
 {
     BeamSetup b;
     b.support = p.choice("support") == "cantilever" ? BeamSupport::cantilever : BeamSupport::simple;
@@ -50,13 +50,13 @@ void run_beam(const Parameters& p, RunContext& ctx)
                          "giving delta_max < 0.01 length (here " +
                          std::to_string(theory / b.length) + " length)");
     const BeamResult r = simulate_beam(b, p.real("dt_factor"));
-    ctx.count_steps(r.steps);
+    context.count_steps(r.steps);
     auto& profile =
-        ctx.table("profile.dat", {{"x_over_L", "1", "node position x/L"},
-                                  {"delta", "m", "downward deflection"},
-                                  {"delta_over_max", "1", "delta/delta_max"},
-                                  {"theory", "1", "point-load shape: eq. (14) or 3 xi - 4 xi^3"},
-                                  {"eq16_printed", "1", "eq. (16) as printed (uniform-load shape)"}});
+        context.table("profile.dat", {{"x_over_L", "1", "node position x/L"},
+                                      {"delta", "m", "downward deflection"},
+                                      {"delta_over_max", "1", "delta/delta_max"},
+                                      {"theory", "1", "point-load shape: eq. (14) or 3 xi - 4 xi^3"},
+                                      {"eq16_printed", "1", "eq. (16) as printed (uniform-load shape)"}});
     for (std::size_t k = 0; k < r.x.size(); ++k) {
         const double xi = r.x[k] / b.length;
         profile.row(
@@ -64,7 +64,7 @@ void run_beam(const Parameters& p, RunContext& ctx)
              b.support == BeamSupport::cantilever ? cantilever_shape(xi) : simple_point_load_shape(xi),
              simple_uniform_load_shape_eq16(xi)});
     }
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     s["deflection_max"] = r.deflection_max;
     s["deflection_max_theory"] = theory;
     s["ratio"] = r.deflection_max / theory;
@@ -86,7 +86,7 @@ RingSetup ring_setup(const Parameters& p)
     return r;
 }
 
-void run_ring_pressure(const Parameters& p, RunContext& ctx)
+void run_ring_pressure(const Parameters& p, RunContext& context)
 {
     RingSetup setup = ring_setup(p);
     if (std::isinf(setup.eta))
@@ -98,8 +98,8 @@ void run_ring_pressure(const Parameters& p, RunContext& ctx)
     shell_only.eta = 0;
     const RingPressureResult shell = ring_under_pressure(shell_only, pressure);
     const RingPressureResult total = ring_under_pressure(setup, pressure);
-    ctx.count_steps(shell.steps + total.steps);
-    auto& s = ctx.summary();
+    context.count_steps(shell.steps + total.steps);
+    auto& s = context.summary();
     s["K_shell"] = shell.K_measured;
     s["K_shell_theory"] = sc.K_shell;
     s["K_shell_printed_approximation"] = 2 * M_PI / (setup.nodes * setup.material.s) * sc.laws.k_s;
@@ -166,7 +166,7 @@ ProfileShape profile_shape(const CompressionState& st, double l0)
     return shape;
 }
 
-void run_ring_compression(const Parameters& p, RunContext& ctx)
+void run_ring_compression(const Parameters& p, RunContext& context)
 {
     RingSetup setup = ring_setup(p);
     setup.plastic_ratio = p.real("plastic_ratio");
@@ -174,27 +174,27 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     const bool unload = p.boolean("unload");
     const bool plastic = std::isfinite(setup.plastic_ratio);
     const RingScales sc = ring_scales(setup);
-    auto progress = ctx.progress("spd.ring_compression");
+    auto progress = context.progress("spd.ring_compression");
     // ParaView frames: one per recorded load step, the step's index as the time value (the strain goes back
     // down on unloading) and the strain as field data.
     std::int64_t load_step = 0;
     const auto frame = [&](const RingBetweenWalls& w, const CompressionState& st) {
-        if (ctx.vtk() && ctx.vtk()->due(load_step))
-            ctx.vtk()->write(static_cast<double>(load_step),
-                             shell_frame(w.model, {w.ring}, {w.bottom_wall, w.top_wall},
-                                         {{"load_step", static_cast<double>(load_step)},
-                                          {"strain", st.strain},
-                                          {"loading", st.loading ? 1.0 : 0.0}}));
+        if (context.vtk() && context.vtk()->due(load_step))
+            context.vtk()->write(static_cast<double>(load_step),
+                                 shell_frame(w.model, {w.ring}, {w.bottom_wall, w.top_wall},
+                                             {{"load_step", static_cast<double>(load_step)},
+                                              {"strain", st.strain},
+                                              {"loading", st.loading ? 1.0 : 0.0}}));
         ++load_step;
     };
     const CompressionResult r = ring_compression(
         setup, strain_max, p.real("strain_step"), unload, p.real("relax_tolerance"),
         [&](double f) { progress.update(f); }, frame);
     progress.finish();
-    ctx.count_steps(r.steps);
+    context.count_steps(r.steps);
     const bool elastica = setup.eta == 0 && !plastic;
     const double F_star = sc.characteristic.F_star, l = sc.l0;
-    auto& steps = ctx.table(
+    auto& steps = context.table(
         "compression.dat",
         {{"eps", "1", "1 - b/b0"},
          {"loading", "1", "1 loading, 0 unloading"},
@@ -253,10 +253,10 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
         }
     }
     auto& profiles =
-        ctx.table("profiles.dat", {{"eps", "1", "1 - b/b0"},
-                                   {"x_over_R", "1", "position from the middle of the contact"},
-                                   {"p_over_pstar", "1", "contact force/(s l0) over p* = F*/(s l0)"},
-                                   {"p_over_p2star", "1", "over p** = F**/(s l0) (NaN if elastic)"}});
+        context.table("profiles.dat", {{"eps", "1", "1 - b/b0"},
+                                       {"x_over_R", "1", "position from the middle of the contact"},
+                                       {"p_over_pstar", "1", "contact force/(s l0) over p* = F*/(s l0)"},
+                                       {"p_over_p2star", "1", "over p** = F**/(s l0) (NaN if elastic)"}});
     for (const CompressionState& st : r.states) {
         if (!st.loading) continue;
         const double e10 = std::round(st.strain * 10);
@@ -268,10 +268,10 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
     }
     // Shapes at eps = 0, 0.1, 0.2, ... (loading and unloading) and after release, closed polygons for
     // plotting.
-    auto& shapes = ctx.table("shapes.dat", {{"eps", "1", "1 - b/b0 (-1: after unloading and release)"},
-                                            {"loading", "1", "1 loading, 0 unloading"},
-                                            {"x_over_R", "1", "vertex position"},
-                                            {"y_over_R", "1", "vertex position"}});
+    auto& shapes = context.table("shapes.dat", {{"eps", "1", "1 - b/b0 (-1: after unloading and release)"},
+                                                {"loading", "1", "1 loading, 0 unloading"},
+                                                {"x_over_R", "1", "vertex position"},
+                                                {"y_over_R", "1", "vertex position"}});
     const auto write_shape = [&](double eps, double loading, const std::vector<double>& x,
                                  const std::vector<double>& y) {
         for (std::size_t k = 0; k <= x.size(); ++k)
@@ -282,7 +282,7 @@ void run_ring_compression(const Parameters& p, RunContext& ctx)
         if (std::abs(st.strain * 20 - e20) < 1e-6) write_shape(st.strain, st.loading, st.shape_x, st.shape_y);
     }
     if (unload) write_shape(-1.0, 0.0, r.released_x, r.released_y);
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     s["contact_length_slope"] = value_or_null(fit_line_slope(eps_late, lc_late));
     // The symmetric contact gains one vertex at each edge at a time: N' l0 - 2c stays within +-l0 of a
     // constant offset, which bounds the slope's departure from the elastica's.

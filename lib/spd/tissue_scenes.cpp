@@ -87,12 +87,12 @@ CurveMeasures curve_measures(const std::vector<TissueRecord>& records, double wi
 }
 
 // Fig. 30: the links at set-up.
-void write_links(RunContext& ctx, const Tissue& tissue, double R)
+void write_links(RunContext& context, const Tissue& tissue, double R)
 {
-    auto& table = ctx.table("links.dat", {{"x1_over_R", "1", "linked vertex a at set-up"},
-                                          {"y1_over_R", "1", "linked vertex a"},
-                                          {"x2_over_R", "1", "linked vertex b"},
-                                          {"y2_over_R", "1", "linked vertex b"}});
+    auto& table = context.table("links.dat", {{"x1_over_R", "1", "linked vertex a at set-up"},
+                                              {"y1_over_R", "1", "linked vertex a"},
+                                              {"x2_over_R", "1", "linked vertex b"},
+                                              {"y2_over_R", "1", "linked vertex b"}});
     for (const CohesiveLink& link : tissue.model.links()) {
         const Vec2 a = tissue.model.vertex(link.a) / R, b = tissue.model.vertex(link.b) / R;
         table.row({a.x(), a.y(), b.x(), b.y()});
@@ -101,13 +101,13 @@ void write_links(RunContext& ctx, const Tissue& tissue, double R)
 
 // Figs. 30, 32, 34: set-up, three states during loading (half the peak strain, the peak, halfway from the
 // peak to the end) and the end of the run, cells coloured by W/W0.
-void write_snapshots(RunContext& ctx, const PullResult& r, double eps_peak, double R, double W0)
+void write_snapshots(RunContext& context, const PullResult& r, double eps_peak, double R, double W0)
 {
     const double eps_end = r.records.back().strain;
     const std::vector<std::size_t> chosen = {
         0, nearest_snapshot(r.snapshots, 0.5 * eps_peak), nearest_snapshot(r.snapshots, eps_peak),
         nearest_snapshot(r.snapshots, 0.5 * (eps_peak + eps_end)), r.snapshots.size() - 1};
-    auto& table = ctx.table(
+    auto& table = context.table(
         "snapshot.dat",
         {{"snapshot", "1",
           "0: set-up, 1-3: during loading (eps_peak/2, eps_peak, halfway to the end), 4: end"},
@@ -130,12 +130,12 @@ void write_snapshots(RunContext& ctx, const PullResult& r, double eps_peak, doub
 
 // The crack: the broken links at the end (positions, forces at breaking). Returns the mean height of the
 // broken links above the bottom clamp over H (NaN without any).
-double write_crack(RunContext& ctx, const Tissue& tissue, double R)
+double write_crack(RunContext& context, const Tissue& tissue, double R)
 {
     const ShellModel& model = tissue.model;
     const CohesiveLaw& law = model.link_law();
-    auto& table =
-        ctx.table("broken.dat", {{"x1_over_R", "1", "vertex a of a broken link at the end"},
+    auto& table = context.table("broken.dat",
+                                {{"x1_over_R", "1", "vertex a of a broken link at the end"},
                                  {"y1_over_R", "1", "vertex a"},
                                  {"x2_over_R", "1", "vertex b"},
                                  {"y2_over_R", "1", "vertex b"},
@@ -155,12 +155,12 @@ double write_crack(RunContext& ctx, const Tissue& tissue, double R)
 
 // Fig. 31: the zeta = 0 curve of the library (yield_normal_force) over |f_t| <= 2 f_t^0, with zeta evaluated
 // on it. Returns max |zeta| (0 up to round-off).
-double write_yield_curve(RunContext& ctx, const CohesiveLaw& law)
+double write_yield_curve(RunContext& context, const CohesiveLaw& law)
 {
-    auto& table =
-        ctx.table("yield_curve.dat", {{"ft_over_ft0", "1", "tangential force over f_t^0"},
-                                      {"fn_over_fn0", "1", "normal force on zeta = 0 over |f_n^0| (eq. 39)"},
-                                      {"zeta", "1", "yield function eq. (39) evaluated on the curve"}});
+    auto& table = context.table("yield_curve.dat",
+                                {{"ft_over_ft0", "1", "tangential force over f_t^0"},
+                                 {"fn_over_fn0", "1", "normal force on zeta = 0 over |f_n^0| (eq. 39)"},
+                                 {"zeta", "1", "yield function eq. (39) evaluated on the curve"}});
     double zeta_max = 0;
     for (int k = -200; k <= 200; ++k) {
         const double f_t = 0.01 * k * law.f_t0, f_n = yield_normal_force(f_t, law);
@@ -206,7 +206,7 @@ LinkBreak break_one_link(ShellModel model, std::size_t index, double approach, b
     return {};
 }
 
-void run_tissue(const Parameters& p, RunContext& ctx)
+void run_tissue(const Parameters& p, RunContext& context)
 {
     TissueSetup setup;
     setup.columns = static_cast<int>(p.integer("columns"));
@@ -233,7 +233,7 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     if (setup.material.h >= 0.5 * setup.radius)
         throw InputError("h = " + std::to_string(setup.material.h) +
                          ": the cell wall must be thin against the cell; allowed: h < 0.5 R = 0.5 m");
-    ctx.record_seed(setup.seed);
+    context.record_seed(setup.seed);
 
     Tissue tissue = build_tissue(setup);
     const TissueScales sc = tissue_scales(setup);
@@ -241,7 +241,7 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     const double R = setup.radius, s_depth = setup.material.s, W = tess.width;
     const double sigma_star = sc.F_star / (2 * R * s_depth); // eq. (37)
 
-    write_links(ctx, tissue, R);
+    write_links(context, tissue, R);
     // Fig. 31: the measured forces at which one link breaks in pure opening (mode I) and in shear under the
     // compression f_n = |f_n^0|/2 (the contact law, which acts between linked cells too, holds an overlap of
     // |f_n^0|/(2 k_n) = 0.48 (r_i + r_j) at the default cohesion; |f_n^0|/k_n would exceed its
@@ -253,13 +253,13 @@ void run_tissue(const Parameters& p, RunContext& ctx)
     const LinkBreak shear = break_one_link(tissue.model, 0, 0.5 * std::abs(law0.f_n0) / law0.k_n, false,
                                            7e-4 * law0.f_t0 / law0.k_t, dt_probe);
 
-    auto progress = ctx.progress("spd.tissue");
+    auto progress = context.progress("spd.tissue");
     // ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
     // N-th record), the time since the pull started as time value: the cells with W/W0 (Fig. 32) and the
     // cohesive links as lines with their forces and broken state, and the contacts (broken links become
     // frictional contacts).
     const auto frame = [&](const Tissue& t, double time) {
-        if (!ctx.vtk() || !ctx.vtk()->next(20)) return;
+        if (!context.vtk() || !context.vtk()->next(20)) return;
         const ShellModel& model = t.model;
         vtk::PolyData cells = shell_particles(model, t.cells);
         std::vector<double> energy;
@@ -286,24 +286,24 @@ void run_tissue(const Parameters& p, RunContext& ctx)
             part.data.field("force_top", top_clamp_force(t));
             part.data.field("broken_links", model.broken_links());
         }
-        ctx.vtk()->write(time, parts);
+        context.vtk()->write(time, parts);
     };
     const PullResult r = pull(
-        tissue, pulling, [&](double f) { progress.update(f); }, ctx.checkpoints(), frame);
+        tissue, pulling, [&](double f) { progress.update(f); }, context.checkpoints(), frame);
     progress.finish();
-    ctx.count_steps(r.steps);
+    context.count_steps(r.steps);
 
     const CurveMeasures m = curve_measures(r.records, W * s_depth);
     if (!(m.sigma_max > 0))
         throw NumericalError("tissue stress", r.steps, "the top clamp never pulled: sigma_max = 0");
-    auto& curve =
-        ctx.table("tissue.dat",
-                  {{"eps_h", "1", "vertical strain ln(H/H0), H between the clamped vertex lines"},
-                   {"sigma_over_sigmamax", "1", "top-clamp stress F_top/(W s) over its maximum (Fig. 33)"},
-                   {"sigma_over_sigmastar", "1", "top-clamp stress over sigma* = F*/(2Rs), eq. (37)"},
-                   {"sigma_bottom_over_sigmamax", "1", "bottom-clamp stress over the top maximum"},
-                   {"broken_links", "1", "links broken so far"},
-                   {"kinetic_over_W0", "1", "kinetic energy over W0 = (f_n^0)^2/(2 k_n)"}});
+    auto& curve = context.table(
+        "tissue.dat",
+        {{"eps_h", "1", "vertical strain ln(H/H0), H between the clamped vertex lines"},
+         {"sigma_over_sigmamax", "1", "top-clamp stress F_top/(W s) over its maximum (Fig. 33)"},
+         {"sigma_over_sigmastar", "1", "top-clamp stress over sigma* = F*/(2Rs), eq. (37)"},
+         {"sigma_bottom_over_sigmamax", "1", "bottom-clamp stress over the top maximum"},
+         {"broken_links", "1", "links broken so far"},
+         {"kinetic_over_W0", "1", "kinetic energy over W0 = (f_n^0)^2/(2 k_n)"}});
     for (std::size_t k = 0; k < r.records.size(); ++k) {
         const TissueRecord& rec = r.records[k];
         curve.row({rec.strain, m.sigma[k] / m.sigma_max, m.sigma[k] / sigma_star,
@@ -311,15 +311,15 @@ void run_tissue(const Parameters& p, RunContext& ctx)
                    rec.kinetic_energy / sc.W0});
     }
     const double eps_peak = r.records[m.peak].strain;
-    write_snapshots(ctx, r, eps_peak, R, sc.W0);
-    const double crack_height = write_crack(ctx, tissue, R);
+    write_snapshots(context, r, eps_peak, R, sc.W0);
+    const double crack_height = write_crack(context, tissue, R);
     const CohesiveLaw& law = tissue.model.link_law();
-    const double zeta_max = write_yield_curve(ctx, law);
+    const double zeta_max = write_yield_curve(context, law);
 
     const double cell_area = total_cell_area(tess);
     const Cohesion end = cohesion(tissue);
     const int links = static_cast<int>(tissue.model.links().size());
-    auto& s = ctx.summary();
+    auto& s = context.summary();
     s["yield_curve_zeta_max"] = zeta_max;
     // Fig. 31, one link broken through the model: f_n at a pure-opening break over f_n^0 (eq. (39): 1), and
     // |f_t| at a shear break in compression over eq. (39)'s threshold f_t^0 sqrt(1 + f_n/|f_n^0|) (1), with
