@@ -3,11 +3,10 @@
 // small compression (exponent 1), and its compliance is that of a thin elastic ring under diametral point
 // loads: delta/F = (pi/4 - 2/pi) R^3/(EI) + (4/pi - pi/4) R/(EA) (Roark, ring under diametral load with
 // hoop-extension correction alpha = I/(A R^2)), with EI = k_b l0 and EA = k_l l0 for the discrete shell.
+#include "core/fits.hpp"
 #include "dpm/box_compress.hpp"
 #include "dpm/compress.hpp"
 #include "support/tolerance.hpp"
-
-#include <gsl/gsl_fit.h>
 
 #include <cmath>
 #include <numbers>
@@ -21,14 +20,12 @@ namespace {
 // The exponent of F ~ delta^e: the least-squares slope of ln F against ln(delta/D) over the samples.
 double force_exponent(const CompressionResult& r)
 {
-    std::vector<double> x, y;
+    std::vector<double> deflections, forces;
     for (const auto& s : r.samples) {
-        x.push_back(std::log(s.delta_over_d));
-        y.push_back(std::log(s.force));
+        deflections.push_back(s.delta_over_d);
+        forces.push_back(s.force);
     }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &c00, &c01, &c11, &sumsq);
-    return c1;
+    return fit_power_law_exponent(deflections, forces).value();
 }
 
 } // namespace

@@ -1,14 +1,17 @@
 // SD Fig. 3b: the Poiseuille-Hertz crossover kappa ~ (h/R)^(3/2), and the Poiseuille window that shrinks and
 // vanishes as kappa grows.
+#include "core/fits.hpp"
 #include "sd/approach.hpp"
 #include "sd/approach_analysis.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
-#include <gsl/gsl_fit.h>
+#include <optional>
 #include <vector>
 
 using namespace softgrain::sd;
+using softgrain::fit_power_law;
+using softgrain::Line;
 using softgrain::verification::Tolerance;
 
 namespace {
@@ -35,7 +38,7 @@ TEST_CASE(
     // Derivation: at delta = h, eq. (1) with eqs. (3), (5) gives kappa = alpha sqrt2 (h/R) sqrt(h-bar/R +
     // h/R), which tends to 2 alpha (h/R)^(3/2) = (8/9)(h/R)^(3/2) for h << R: the order-one factor of the
     // paper's "~" is 2 alpha.
-    std::vector<double> log_h, log_kappa;
+    std::vector<double> h_crossover, kappas;
     for (double kappa : {1e-7, 1e-6, 1e-5, 1e-4}) {
         CAPTURE(kappa);
         const ApproachAnalysis a = analyse(kappa, approach(kappa));
@@ -44,16 +47,15 @@ TEST_CASE(
         // error in h is ~ spacing^2/8 times the curvature of ln(delta/h), below 1e-3 relative (3/2 of it in
         // kappa).
         CHECK_CLOSE(crossover_kappa_paper(material, *a.h_crossover), kappa, (Tolerance{1.5e-3, 0.0}));
-        log_h.push_back(std::log(*a.h_crossover));
-        log_kappa.push_back(std::log(kappa));
+        h_crossover.push_back(*a.h_crossover);
+        kappas.push_back(kappa);
     }
-    double c0, c1, cov00, cov01, cov11, chisq;
-    gsl_fit_linear(log_h.data(), 1, log_kappa.data(), 1, log_h.size(), &c0, &c1, &cov00, &cov01, &cov11,
-                   &chisq);
+    const std::optional<Line> power_law = fit_power_law(h_crossover, kappas);
+    REQUIRE(power_law.has_value());
     // h_crossover <= 3e-3 R here: h-bar = h (1 - h/R) bends the slope by ~h/(2R) < 2e-3; interpolation adds
     // 1e-3.
-    CHECK_CLOSE(c1, 1.5, (Tolerance{0.0, 5e-3}));
-    CHECK_CLOSE(std::exp(c0), 2 * material.alpha, (Tolerance{2e-2, 0.0}));
+    CHECK_CLOSE(power_law->slope, 1.5, (Tolerance{0.0, 5e-3}));
+    CHECK_CLOSE(std::exp(power_law->intercept), 2 * material.alpha, (Tolerance{2e-2, 0.0}));
 }
 
 TEST_CASE("the Poiseuille window (|lambda2 - 1| <~ 0.1) shrinks as kappa grows and vanishes by kappa = 1e-3 "
