@@ -2,6 +2,7 @@
 BUILD  ?= build
 SCALE  ?= default
 OUT    ?= figures
+MPIRUN ?=
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
@@ -37,8 +38,10 @@ verify-sanitize: deps
 
 # Every figure of every paper (SCALE=smoke|default|paper) into $(OUT), then $(OUT)/index.html. Figures run in
 # parallel under make -j; a failed figure does not stop the others, and the command exits non-zero naming it.
+# MPIRUN="mpirun -n 64" runs the ensemble figures' runs under that MPI launcher.
 reproduce-figures: build
-	@$(MAKE) --no-print-directory -f scripts/figures.mk SCALE=$(SCALE) SOFTGRAIN=$(BUILD)/softgrain OUT=$(OUT)
+	@$(MAKE) --no-print-directory -f scripts/figures.mk SCALE=$(SCALE) SOFTGRAIN=$(BUILD)/softgrain OUT=$(OUT) \
+	  MPIRUN='$(MPIRUN)'
 
 bench: build
 	@scripts/bench $(BUILD)/softgrain

@@ -2,6 +2,8 @@
 SOFTGRAIN ?= build/softgrain
 SCALE ?= default
 OUT ?= figures
+# MPIRUN="mpirun -n 64" (or "srun"): the launcher of the ensemble figures' runs (README, "Ensembles over MPI").
+MPIRUN ?=
 FIGURES := $(shell python3 scripts/reproduce list)
 REPORTS := $(FIGURES:%=$(OUT)/%.claims.json)
 
@@ -29,4 +31,4 @@ $(shell python3 scripts/reproduce start-progress $(PROGRESS) $(or $(PLANNED),$(F
 # and the index, written last, shows the failed figures at the top and exits 1 naming them.
 $(OUT)/%.claims.json: FORCE
 	-@python3 scripts/reproduce figure $* --scale $(SCALE) --softgrain $(SOFTGRAIN) --out $(OUT) --runs $(RUNS) \
-	  --progress $(PROGRESS)
+	  --progress $(PROGRESS) $(if $(MPIRUN),--mpirun "$(MPIRUN)")

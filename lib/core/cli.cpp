@@ -1,5 +1,6 @@
 #include "core/cli.hpp"
 
+#include "core/ensemble.hpp"
 #include "core/errors.hpp"
 #include "core/gsl_checked.hpp"
 #include "core/leftovers.hpp"
@@ -169,20 +170,31 @@ void check_vtk_request(const Scene& scene, const VtkRequest& asked, const SceneR
     throw InputError("--vtk: scene '" + scene.name + "' writes no VTK frames yet; allowed for: " + allowed);
 }
 
+// Every rank of an MPI run runs the scene (ensembles spread their members over the ranks, core/ensemble.hpp)
+// and only the first writes: the others get no checkpoints, no frames and a context that discards its
+// output. A failure of any rank, up to the end of the scene, is every rank's before anything is committed.
 int run_scene(const std::string& target, const std::vector<std::string>& assignments,
               const std::string& out_dir, bool quiet, const CheckpointRequest& checkpointing,
               const VtkRequest& vtk, const SceneRegistry& scenes)
 {
-    RunRequest request = resolve_scene(target, scenes);
-    apply_overrides(request.parameters, assignments);
-    check_vtk_request(*request.scene, vtk, scenes);
-    if (request.scene->memory) refuse_absurd_size(*request.scene, request.parameters);
-    auto checkpoints = checkpoints_for(*request.scene, request, checkpointing, out_dir, scenes);
-    RunContext context(out_dir, request.output_name, request.parameters, quiet);
-    context.enable_checkpoints(std::move(checkpoints));
-    if (vtk.enabled) context.enable_vtk(vtk.every);
-    request.scene->run(request.parameters, context);
-    const fs::path written = context.commit();
+    RunRequest request;
+    std::unique_ptr<RunContext> context;
+    on_every_rank([&] {
+        request = resolve_scene(target, scenes);
+        apply_overrides(request.parameters, assignments);
+        check_vtk_request(*request.scene, vtk, scenes);
+        if (request.scene->memory) refuse_absurd_size(*request.scene, request.parameters);
+        const bool writes = first_rank();
+        auto checkpoints =
+            writes ? checkpoints_for(*request.scene, request, checkpointing, out_dir, scenes) : nullptr;
+        context = std::make_unique<RunContext>(out_dir, request.output_name, request.parameters, quiet,
+                                               writes ? RunContext::Output::written
+                                                      : RunContext::Output::discarded);
+        context->enable_checkpoints(std::move(checkpoints));
+        if (vtk.enabled) context->enable_vtk(vtk.every);
+        request.scene->run(request.parameters, *context);
+    });
+    const fs::path written = context->commit();
     if (!quiet) std::cout << "wrote " << written.string() << "\n";
     return exit_success;
 }
@@ -300,6 +312,12 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
                                "work-precision table to read (default: figures/<paper>/<figure>.dat, else "
                                "data/<paper>/<figure>.dat)");
 
+    // The ranks of an MPI run other than the first print nothing: the first prints for all of them (an error
+    // of any rank reaches it, core/ensemble.hpp).
+    if (!first_rank()) {
+        std::cout.setstate(std::ios::badbit);
+        std::cerr.setstate(std::ios::badbit);
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -319,26 +337,10 @@ int run_command_line(int argc, char** argv, const SceneRegistry& scenes)
             return run_scene(run_target, assignments, out_dir, quiet, checkpointing, vtk, scenes);
         }
         return exit_success;
-    } catch (const InputError& e) {
-        std::cerr << "softgrain: bad input: " << e.what() << "\n";
-        return exit_bad_input;
-    } catch (const NumericalError& e) {
-        std::cerr << "softgrain: " << e.what() << "\n";
-        return exit_numerical_failure;
-    } catch (const IoError& e) {
-        std::cerr << "softgrain: I/O failure: " << e.what() << "\n";
-        return exit_io_failure;
-    } catch (const fs::filesystem_error& e) {
-        std::cerr << "softgrain: I/O failure: " << e.what() << "\n";
-        return exit_io_failure;
-    } catch (const std::bad_alloc&) {
-        std::cerr << "softgrain: out of memory: the run needs more memory than the machine gives it\n";
-        return exit_io_failure;
-    } catch (const std::exception& e) {
-        std::cerr << "softgrain: internal error (a defect of softgrain; please report it with the command "
-                     "line): "
-                  << e.what() << "\n";
-        return exit_internal_error;
+    } catch (...) {
+        const Failure failure = failure_of(std::current_exception());
+        std::cerr << "softgrain: " << user_message(failure) << "\n";
+        return exit_code(failure);
     }
 }
 

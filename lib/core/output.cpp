@@ -169,6 +169,7 @@ void Table::row(const std::vector<double>& values)
     if (values.size() != width_)
         throw std::logic_error("table row has " + std::to_string(values.size()) + " values for " +
                                std::to_string(width_) + " columns");
+    if (!written_) return;
     for (std::size_t i = 0; i < values.size(); ++i)
         stream_ << (i ? " " : "") << values[i];
     stream_ << "\n";
@@ -176,6 +177,7 @@ void Table::row(const std::vector<double>& values)
 
 void Table::close()
 {
+    if (!written_) return;
     stream_.close();
     if (stream_.fail()) throw IoError("writing " + path_.string() + " failed (disk full?)");
 }
@@ -207,12 +209,13 @@ void Progress::finish()
 }
 
 RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Parameters& parameters,
-                       bool quiet)
+                       bool quiet, Output output)
     : final_dir_(out_dir / scene_name),
       partial_dir_(out_dir / ("." + scene_name + ".partial-" + std::to_string(getpid()))),
-      scene_name_(std::move(scene_name)), parameters_json_(parameters.to_json()), quiet_(quiet),
-      start_(std::chrono::steady_clock::now())
+      scene_name_(std::move(scene_name)), parameters_json_(parameters.to_json()),
+      quiet_(quiet || output == Output::discarded), output_(output), start_(std::chrono::steady_clock::now())
 {
+    if (output_ == Output::discarded) return;
     refuse_to_replace_foreign(final_dir_); // before the run, not after hours of it
     remove_stale_partial_directories(out_dir);
     fs::remove_all(partial_dir_); // a leftover of an earlier process with this pid
@@ -227,6 +230,7 @@ RunContext::RunContext(const fs::path& out_dir, std::string scene_name, const Pa
 
 RunContext::~RunContext()
 {
+    if (output_ == Output::discarded) return;
     keep_on_signal(partial_dir_);
     if (!vtk_frames_dir_.empty()) keep_on_signal(vtk_frames_dir_);
     if (committed_) return;
@@ -240,6 +244,7 @@ RunContext::~RunContext()
 
 void RunContext::enable_vtk(std::optional<std::int64_t> every)
 {
+    if (output_ == Output::discarded) return; // vtk() stays nullptr: no frames
     const std::string name = final_dir_.filename().string();
     if (!checkpoints_) {
         vtk_ = std::make_unique<vtk::Series>(partial_dir_ / "vtk", name, every);
@@ -264,12 +269,18 @@ void RunContext::enable_vtk(std::optional<std::int64_t> every)
 
 Table& RunContext::table(const std::string& file_name, const std::vector<Column>& columns)
 {
-    tables_.push_back(std::make_unique<Table>(partial_dir_ / file_name, columns, preamble_));
+    tables_.push_back(output_ == Output::discarded
+                          ? std::make_unique<Table>(columns.size())
+                          : std::make_unique<Table>(partial_dir_ / file_name, columns, preamble_));
     return *tables_.back();
 }
 
 fs::path RunContext::commit()
 {
+    if (output_ == Output::discarded) {
+        committed_ = true;
+        return final_dir_;
+    }
     for (auto& table : tables_)
         table->close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();

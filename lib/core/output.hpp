@@ -51,6 +51,8 @@ class Table
 {
   public:
     Table(const std::filesystem::path& path, const std::vector<Column>& columns, const std::string& preamble);
+    // A table of a run that writes nothing (RunContext::Output::discarded): rows are checked and dropped.
+    explicit Table(std::size_t width) : width_(width), written_(false) {}
     void row(const std::vector<double>& values); // one value per column, in order
     void close();
 
@@ -58,6 +60,7 @@ class Table
     std::filesystem::path path_;
     std::ofstream stream_;
     std::size_t width_;
+    bool written_ = true;
 };
 
 // Progress on stderr (percent, elapsed, estimated remaining) for long runs; silent when quiet or when
@@ -79,8 +82,11 @@ class Progress
 class RunContext
 {
   public:
+    // `discarded`: the run's results are computed but nothing is written or shown (no directory, tables,
+    // summary, frames or progress): the MPI ranks other than the first (core/ensemble.hpp).
+    enum class Output { written, discarded };
     RunContext(const std::filesystem::path& out_dir, std::string scene_name, const Parameters& parameters,
-               bool quiet);
+               bool quiet, Output output = Output::written);
     ~RunContext(); // removes the partial directory if the run did not commit
 
     RunContext(const RunContext&) = delete;
@@ -112,7 +118,7 @@ class RunContext
     void record_seed(std::uint64_t seed) { summary_["seed"] = seed; }
 
     // Finishes the summary (parameters, version, wall time, time per step, peak memory), closes the
-    // tables and moves the directory into place. Returns the final directory.
+    // tables and moves the directory into place. Returns the final directory (not made when discarded).
     std::filesystem::path commit();
 
   private:
@@ -121,6 +127,7 @@ class RunContext
     nlohmann::json parameters_json_;
     std::string preamble_;
     bool quiet_;
+    Output output_;
     bool committed_ = false;
     nlohmann::json summary_ = nlohmann::json::object();
     std::vector<std::unique_ptr<Table>> tables_;

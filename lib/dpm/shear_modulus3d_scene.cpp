@@ -6,6 +6,7 @@
 // <G> ~ P^eta per model (shear_modulus_ensemble.hpp).
 #include "dpm/shear_modulus3d_scene.hpp"
 
+#include "core/ensemble.hpp"
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
@@ -67,7 +68,7 @@ void run_shear_modulus3d(const Parameters& p, RunContext& context)
     // Every (model, packing) pair is an independent member, run in parallel: packing k of every model starts
     // from the same seed, seed + k (the same random centres and orientations).
     const std::vector<ModulusMember> all =
-        run_members(packings * static_cast<int>(models.size()), [&](int i) {
+        run_ensemble<ModulusMember>(packings * static_cast<int>(models.size()), [&](int i) {
             Jam3dOptions mine = o;
             mine.model = shape_model_from_name(models[i / packings]);
             mine.seed = o.seed + static_cast<std::uint64_t>(i % packings);

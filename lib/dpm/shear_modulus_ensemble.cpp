@@ -4,26 +4,8 @@
 #include "core/output.hpp"
 
 #include <cmath>
-#include <exception>
 
 namespace softgrain::dpm {
-
-std::vector<ModulusMember> run_members(int count, const std::function<ModulusMember(int)>& member)
-{
-    std::vector<ModulusMember> members(count);
-    std::vector<std::exception_ptr> errors(count);
-#pragma omp parallel for schedule(dynamic)
-    for (int k = 0; k < count; ++k) {
-        try {
-            members[k] = member(k);
-        } catch (...) {
-            errors[k] = std::current_exception();
-        }
-    }
-    for (const auto& e : errors)
-        if (e) std::rethrow_exception(e);
-    return members;
-}
 
 EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
                                 RunContext& context)

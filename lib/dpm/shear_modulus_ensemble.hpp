@@ -1,14 +1,14 @@
 // The ensemble part of Fig. 9.16 (DPM sec. 9.4.3), shared by dpm.shear_modulus (2D) and dpm.shear_modulus3d:
-// G at every pressure of a jamming run (shear_modulus.hpp), packings in parallel, the ensemble means <P> and
-// <G> per pressure level, and the exponent eta of <G> ~ P^eta (eq. 9.29 at large P): the least-squares slope
-// of ln<G> against ln<P> over the levels above onset with <G> > 0 (decision dpm-shear-modulus).
+// G at every pressure of a jamming run (shear_modulus.hpp), packings in parallel over threads and MPI ranks
+// (core/ensemble.hpp), the ensemble means <P> and <G> per pressure level, and the exponent eta of
+// <G> ~ P^eta (eq. 9.29 at large P): the least-squares slope of ln<G> against ln<P> over the levels above
+// onset with <G> > 0 (decision dpm-shear-modulus).
 #pragma once
 
 #include "dpm/shear_modulus.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +27,8 @@ struct ModulusMember
     long fire_iterations = 0;
     double force_max = 0; // largest force after any Newton minimisation [system units]
 };
+// A member travels between MPI ranks as JSON (core/ensemble.hpp).
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, fire_iterations, force_max)
 
 // G at every state of a jamming run; a state has x, box, pressure and phi (JamState, Jam3dState);
 // pressure_unit: the model's pressure unit in the system's stress unit; force_tolerance in the model's
@@ -47,9 +49,6 @@ ModulusMember moduli_at_states(System system, const States& states, double press
     }
     return m;
 }
-
-// member(k) for k = 0 ... count - 1, in parallel (OpenMP, dynamic schedule); the first failure is rethrown.
-std::vector<ModulusMember> run_members(int count, const std::function<ModulusMember(int)>& member);
 
 // The ensemble's results; eta absent with fewer than two levels above onset with <G> > 0.
 struct EnsembleModulus

@@ -4,6 +4,7 @@
 // onset.
 #include "dpm/shear_modulus_scene.hpp"
 
+#include "core/ensemble.hpp"
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
@@ -27,7 +28,7 @@ void run_shear_modulus(const Parameters& p, RunContext& context)
     const double tolerance = p.real("force_tolerance");
 
     // Independent ensemble members (seeds first_seed, first_seed + 1, ...).
-    const std::vector<ModulusMember> members = run_members(packings, [&](int k) {
+    const std::vector<ModulusMember> members = run_ensemble<ModulusMember>(packings, [&](int k) {
         JamOptions mine = o;
         mine.seed = first_seed + static_cast<std::uint64_t>(k);
         const JamResult r = jam(mine);
