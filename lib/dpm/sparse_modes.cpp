@@ -70,6 +70,17 @@ double gershgorin_bound(const Eigen::SparseMatrix<double>& m)
     return row_sums.maxCoeff();
 }
 
+// Number of eigenvalues of m below tau: the negative pivots of the LDL^T of m - tau (Sylvester's law of
+// inertia); -1 where the factor breaks down (a zero pivot).
+int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
+{
+    Eigen::SparseMatrix<double> identity(m.rows(), m.cols());
+    identity.setIdentity();
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(m - tau * identity);
+    if (ldlt.info() != Eigen::Success) return -1;
+    return static_cast<int>((ldlt.vectorD().array() < 0).count());
+}
+
 // lambda_max of m by plain Lanczos on m (a few products: it lies at the end of the spectrum).
 double largest_eigenvalue(const Eigen::SparseMatrix<double>& m)
 {
@@ -135,6 +146,18 @@ LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count)
                              "eigenvalues 1/(lambda - sigma) too close together to separate in 1000 restarts "
                              "(a cluster of modes straddling the count-th); ask for more or fewer modes");
     out.spectrum = {solver.eigenvalues(), solver.eigenvectors()};
+    // Completeness: Lanczos from one start vector can miss copies of a degenerate eigenvalue (a symmetric
+    // packing) and return higher ones instead; then more than `count` eigenvalues lie below the highest found.
+    const double tau = out.spectrum.eigenvalues(count - 1) + 1e-9 * bound;
+    const int below = eigenvalues_below(m, tau);
+    if (below != count)
+        throw NumericalError(
+            "completeness of the " + std::to_string(count) + " lowest modes: " + std::to_string(below) +
+                " eigenvalues lie below " + std::to_string(tau) +
+                " (inertia of the LDL^T of M - tau; -1: the factor broke down)",
+            out.restarts,
+            "a degenerate cluster of modes that single-vector Lanczos resolves only in part, or "
+            "a cluster cut by the count; ask for fewer modes, below the cluster");
     out.largest_eigenvalue = largest_eigenvalue(m);
     return out;
 }

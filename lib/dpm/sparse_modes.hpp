@@ -38,7 +38,9 @@ struct LowestModes
 // solves, along the near-null directions the iteration seeks. Convergence: Spectra's relative residual
 // 1e-12 on 1/(lambda - sigma), i.e. lambda to 1e-12 (lambda - sigma) or better; the Krylov space holds
 // max(2 count + 1, count + 40) vectors (at most rows). NumericalError with the converged count, the shift
-// and the restarts when the iteration does not converge in 1000 restarts.
+// and the restarts when the iteration does not converge in 1000 restarts, or when the modes found are not
+// the `count` lowest: the inertia of M - tau, tau 1e-9 R above the highest found, counts the eigenvalues
+// below it (single-vector Lanczos can miss copies of a degenerate eigenvalue).
 LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count);
 
 } // namespace softgrain::dpm
