@@ -45,7 +45,7 @@ Eigen::Matrix<double, 2 * K, 1> gather_image(const Eigen::VectorXd& x, const std
 
 // Eq. (9.4) for every vertex pair of particles a and b.
 double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, const Eigen::Vector2d& shift,
-                  const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
+                  const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
                   Eigen::Matrix2d* virial)
 {
     const double sigma = 0.5 * (a.sigma + b.sigma);
@@ -66,7 +66,7 @@ double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, cons
 // the 1/2 of eq. (9.5).
 double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Particle& b,
                               const Eigen::Vector2d& shift, const Eigen::VectorXd& x,
-                              Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms,
+                              Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms,
                               Eigen::Matrix2d* virial)
 {
     if (b.count < 2) return 0; // a disk has no edges
@@ -117,7 +117,7 @@ double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Parti
 } // namespace
 
 double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                          Eigen::MatrixXd* hessian, unsigned smooth_terms, Eigen::Matrix2d* virial)
+                          HessianSink hessian, unsigned smooth_terms, Eigen::Matrix2d* virial)
 {
     double energy = 0;
     const auto& particles = system.particles;

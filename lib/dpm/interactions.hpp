@@ -87,7 +87,7 @@ struct VertexEdgeEnergy
 // coordinates it is evaluated with (minimum images): the pair part of eqs. (9.25)-(9.26) and its smooth
 // analogue (section 9.4.2).
 double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                          Eigen::MatrixXd* hessian, unsigned smooth_terms = all_smooth,
+                          HessianSink hessian, unsigned smooth_terms = all_smooth,
                           Eigen::Matrix2d* virial = nullptr);
 
 } // namespace softgrain::dpm

@@ -88,8 +88,8 @@ Eigen::Matrix<double, 3 * K, 1> gather_shifted(const Eigen::VectorXd& x, const s
 // Terms go to the global arrays when given.
 template <class OnContact>
 double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen::Vector3d& shift, double k,
-                      double sigma, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                      Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial, const OnContact& contact)
+                      double sigma, const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
+                      Eigen::Matrix3d* virial, const OnContact& contact)
 {
     const Particle3d& b = s.particles[beta];
     const TriangleMesh& mesh = s.meshes[b.mesh];
@@ -160,7 +160,7 @@ void for_each_vertex_near(const DpmSystem3d& s, const std::vector<Sphere>& spher
 
 // Every vertex of mu against the surface of beta (one ordered pair), with the 1/2 of eq. (9.5).
 double ordered_pair_energy(const DpmSystem3d& s, const std::vector<Sphere>& spheres, int mu, int beta,
-                           const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
+                           const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
                            Eigen::Matrix3d* virial)
 {
     const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5) on every ordered term (decision dpm-smooth-half)
@@ -174,7 +174,7 @@ double ordered_pair_energy(const DpmSystem3d& s, const std::vector<Sphere>& sphe
 } // namespace
 
 double smooth_interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                                   Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial)
+                                   HessianSink hessian, Eigen::Matrix3d* virial)
 {
     if (s.kc == 0) return 0;
     const std::vector<Sphere> spheres = bounding_spheres(s, x);

@@ -167,7 +167,7 @@ struct PointSegmentSpring
 // the gradient and Hessian when given; `virial` accumulates the force moment sum_k y_k F_k^T of every term at
 // its imaged coordinates (the smooth analogue of the pair part of eq. 9.26, as eq. 9.26's text says for 2D).
 double smooth_interaction_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
-                                   Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
+                                   Eigen::VectorXd* gradient, HessianSink hessian,
                                    Eigen::Matrix3d* virial = nullptr);
 
 // One ordered half of the above: every vertex of particle mu against the surface of particle beta (with

@@ -19,10 +19,47 @@
 #include <type_traits>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
+#include <cstddef>
 #include <unsupported/Eigen/AutoDiff>
+#include <vector>
 
 namespace softgrain::dpm {
+
+// Where second derivatives are summed: a dense matrix (the full spectrum of a small system) or a list of
+// (row, column, value) triplets that Eigen::SparseMatrix::setFromTriplets sums into the sparse Hessian (the
+// lowest modes of a large one, sparse_modes.hpp); a dense n x n Hessian of n = 16 128 degrees of freedom
+// needs 2 GB, the triplets grow as n (a few hundred per coordinate). Converts implicitly from a dense matrix pointer and from nullptr (no
+// Hessian), so an energy function takes a HessianSink where it took an Eigen::MatrixXd*, and tests it as one.
+class HessianSink
+{
+  public:
+    HessianSink(std::nullptr_t = nullptr) {}
+    HessianSink(Eigen::MatrixXd* dense) : dense_(dense) {}
+    HessianSink(std::vector<Eigen::Triplet<double>>* triplets) : triplets_(triplets) {}
+    explicit operator bool() const { return dense_ != nullptr || triplets_ != nullptr; }
+
+    // Adds `block` to the rows from `row` and the columns from `column`.
+    template <class Block>
+    void add(Eigen::Index row, Eigen::Index column, const Eigen::MatrixBase<Block>& block)
+    {
+        if (dense_) {
+            dense_->block(row, column, block.rows(), block.cols()) += block;
+            return;
+        }
+        // Evaluated once: a product expression (the rank-one shape blocks) would be re-evaluated per entry.
+        const typename Block::PlainObject values = block;
+        for (Eigen::Index j = 0; j < values.cols(); ++j)
+            for (Eigen::Index i = 0; i < values.rows(); ++i)
+                triplets_->emplace_back(static_cast<int>(row + i), static_cast<int>(column + j),
+                                        values(i, j));
+    }
+
+  private:
+    Eigen::MatrixXd* dense_ = nullptr;
+    std::vector<Eigen::Triplet<double>>* triplets_ = nullptr;
+};
 
 template <int N>
 using FirstOrder = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
@@ -106,14 +143,14 @@ void scatter_gradient(const Eigen::Matrix<double, K * Dim, 1>& local, const std:
 // Adds weight * (gradient, Hessian) of a local result into the global arrays (either may be null).
 template <int Dim, int K>
 void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& points, double weight,
-             Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
+             Eigen::VectorXd* gradient, HessianSink hessian)
 {
     if (gradient) scatter_gradient<Dim, K>(d.gradient, points, weight, *gradient);
     if (!hessian) return;
     for (int a = 0; a < K; ++a) {
         for (int b = 0; b < K; ++b)
-            hessian->template block<Dim, Dim>(Dim * points[a], Dim * points[b]) +=
-                weight * d.hessian.template block<Dim, Dim>(Dim * a, Dim * b);
+            hessian.add(Dim * points[a], Dim * points[b],
+                        weight * d.hessian.template block<Dim, Dim>(Dim * a, Dim * b));
     }
 }
 
@@ -125,7 +162,7 @@ void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& point
 template <int Dim, int K, class Term>
 double add_local_term(const Term& term, const std::array<int, K>& points,
                       const Eigen::Matrix<double, K * Dim, 1>& local_x, Eigen::VectorXd* gradient,
-                      Eigen::MatrixXd* hessian, Eigen::Matrix<double, Dim, Dim>* virial = nullptr)
+                      HessianSink hessian, Eigen::Matrix<double, Dim, Dim>* virial = nullptr)
 {
     if (virial) {
         const auto d =

@@ -40,8 +40,13 @@ SpectrumCounts count_modes(const Eigen::VectorXd& eigenvalues, double threshold)
 
 double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold)
 {
-    const double round_off = static_cast<double>(eigenvalues.size()) *
-                             std::numeric_limits<double>::epsilon() * eigenvalues.cwiseAbs().maxCoeff();
+    return zero_mode_threshold(eigenvalues.size(), eigenvalues.cwiseAbs().maxCoeff(), threshold);
+}
+
+double zero_mode_threshold(Eigen::Index n, double largest_magnitude, double threshold)
+{
+    const double round_off =
+        static_cast<double>(n) * std::numeric_limits<double>::epsilon() * largest_magnitude;
     return std::max(threshold, round_off);
 }
 

@@ -49,6 +49,9 @@ SpectrumCounts count_modes(const Eigen::VectorXd& eigenvalues, double threshold)
 // single 2D particle (n = 20) it stays below 1e-13; for N = 16 packings (n = 384, max lambda~ 17-25) it is
 // 1.5e-12 - 2.2e-12. Same units as the eigenvalues.
 double zero_mode_threshold(const Eigen::VectorXd& eigenvalues, double threshold);
+// The same from the matrix size n and max|lambda| alone (the lowest modes of sparse_modes.hpp, where
+// max|lambda| comes from a separate Lanczos run).
+double zero_mode_threshold(Eigen::Index n, double largest_magnitude, double threshold);
 // Zero modes of an isolated particle at its equilibrium (DPM sec. 9.4.3): a one-vertex disk has its
 // `dimension` translations; a floppy polygon N_dof - N_c = N - 1 (Fig. 9.14a), a floppy polyhedron
 // N_dof - N_f - 1 = N + 3 (Fig. 9.15a); an elastic shell or a surface-tension particle its rigid motions,

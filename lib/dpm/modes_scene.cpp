@@ -8,6 +8,7 @@
 #include "dpm/modes.hpp"
 #include "dpm/preferred_shape.hpp"
 #include "dpm/single_particle.hpp"
+#include "dpm/sparse_modes.hpp"
 #include "dpm/stress.hpp"
 
 #include <algorithm>
@@ -106,27 +107,55 @@ nlohmann::json median_or_null(std::vector<double> values)
     return values[values.size() / 2];
 }
 
+// The modes write_spectrum reads: every mode by the dense eigensolver (lowest = 0), or the `lowest` lowest
+// by shift-and-invert Lanczos on the sparse matrix (sparse_modes.hpp); with max|lambda| [E/L^2] for the
+// round-off bound of the zero-mode threshold (from a Lanczos run for lambda_max in the sparse case).
+struct ComputedModes
+{
+    ModeSpectrum modes;
+    double largest_magnitude = 0;
+};
+ComputedModes compute_modes(const DpmSystem& system, const Eigen::VectorXd& x, int lowest)
+{
+    if (lowest == 0) {
+        ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
+        const double largest = modes.eigenvalues.cwiseAbs().maxCoeff();
+        return {std::move(modes), largest};
+    }
+    if (lowest >= x.size())
+        throw InputError("lowest_modes = " + std::to_string(lowest) + " for " + std::to_string(x.size()) +
+                         " degrees of freedom; allowed: 0 (every mode, dense) or 1 ... " +
+                         std::to_string(x.size() - 1));
+    LowestModes found = lowest_modes(sparse_dynamical_matrix(system, x), lowest);
+    const double largest = std::max(std::abs(found.spectrum.eigenvalues(0)), found.largest_eigenvalue);
+    return {std::move(found.spectrum), largest};
+}
+
 // Eigenvalues (eq. 9.28) in units `unit`, the tables eigenvalues.dat and mode_energy.dat, and the summary
 // keys common to single particles and packings. Zero modes: below zero_threshold, or below the round-off
 // bound where that is larger (zero_mode_threshold), in magnitude; below minus that, negative modes (a
-// saddle, decision dpm-packing-minimum). Returns the counts and the zero modes.
+// saddle, decision dpm-packing-minimum). `lowest` > 0: only that many lowest modes (compute_modes); they
+// must reach a non-zero mode (else the zero-mode count is incomplete: InputError), lambda_max comes from
+// Lanczos, and quadratic_mode_exponent, a median over every non-zero mode, is not written. Returns the
+// counts and the zero modes.
 struct WrittenSpectrum
 {
     SpectrumCounts counts;
     Eigen::MatrixXd zero_modes; // orthonormal columns
 };
 WrittenSpectrum write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
-                               double zero_threshold, RunContext& context)
+                               double zero_threshold, int lowest, RunContext& context)
 {
     const auto started = std::chrono::steady_clock::now();
-    const ModeSpectrum modes = vibrational_modes(system, x); // exact Hessian + dense eigensolver
+    const ComputedModes computed = compute_modes(system, x, lowest);
+    const ModeSpectrum& modes = computed.modes;
     const double spectrum_seconds = seconds_since(started);
     // The cost chart's exponent (DPM-cost) needs the time of the algorithm, not of the other work on a shared
     // machine, which only ever adds: the least of at least 3 repeats and 0.2 s of them (at most 20).
     double spectrum_seconds_min = spectrum_seconds, spent = spectrum_seconds;
     for (int repeat = 1; repeat < 20 && (repeat < 3 || spent < 0.2); ++repeat) {
         const auto again = std::chrono::steady_clock::now();
-        const ModeSpectrum repeated = vibrational_modes(system, x);
+        const ModeSpectrum repeated = compute_modes(system, x, lowest).modes;
         const double seconds = seconds_since(again);
         if (repeated.eigenvalues.size() != modes.eigenvalues.size())
             throw std::logic_error("write_spectrum: a repeated spectrum changed size");
@@ -134,9 +163,14 @@ WrittenSpectrum write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x
         spent += seconds;
     }
     const Eigen::VectorXd lambda = modes.eigenvalues / unit;
-    const double threshold = zero_mode_threshold(lambda, zero_threshold);
+    const double threshold = zero_mode_threshold(x.size(), computed.largest_magnitude / unit, zero_threshold);
     const SpectrumCounts counts = count_modes(lambda, threshold);
     const int positive = counts.first_positive();
+    if (lowest > 0 && positive >= lowest)
+        throw InputError("lowest_modes = " + std::to_string(lowest) +
+                         ": all of them are zero or negative modes " + "(threshold " +
+                         std::to_string(threshold) +
+                         "), so the zero-mode count is incomplete; allowed: a larger lowest_modes");
 
     auto& spectrum =
         context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
@@ -189,10 +223,11 @@ WrittenSpectrum write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x
         positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
     s["lambda_largest_zero"] =
         counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
-    s["lambda_max"] = lambda(lambda.size() - 1);
+    s["lambda_max"] = lowest > 0 ? computed.largest_magnitude / unit : lambda(lambda.size() - 1);
     s["energy"] = u0;
     s["zero_mode_exponent"] = median_or_null(zero_exponents);
-    s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
+    if (lowest == 0) s["quadratic_mode_exponent"] = median_or_null(quadratic_exponents);
+    s["modes_computed"] = lambda.size();
     return {counts, modes.eigenvectors.middleCols(counts.negative, counts.zero)};
 }
 
@@ -217,8 +252,10 @@ void run_packing_modes(const Parameters& p, RunContext& context)
     // A saddle FIRE stopped beside shows as negative modes (decision dpm-packing-minimum).
     const double zero_threshold = p.real("zero_threshold");
     const double force_max = polish_for_modes(r.system, r.x, r.pressure_unit);
-    const WrittenSpectrum spectrum = write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, context);
-    if (o.model != "smooth_disk")
+    const int lowest = static_cast<int>(p.integer("lowest_modes"));
+    const WrittenSpectrum spectrum =
+        write_spectrum(r.system, r.x, r.pressure_unit, zero_threshold, lowest, context);
+    if (o.model != "smooth_disk" && lowest == 0) // every mode, and the highest one (Fig. 9.5d)
         write_mode_parts(r.system, r.x, r.pressure_unit, spectrum.counts.first_positive(), context);
     // Rattlers: particles whose contact forces cannot be told from zero at the polished equilibrium (also
     // those held by one contact of vanishing force, which keep 2 of their 3 rigid motions as zero modes); the
@@ -265,7 +302,9 @@ void run_modes(const Parameters& p, RunContext& context)
     const double force = particle.force_max;
     context.count_steps(particle.fire_iterations);
 
-    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"), context).counts.zero;
+    const int zero = write_spectrum(system, x, k.ka * a0, p.real("zero_threshold"),
+                                    static_cast<int>(p.integer("lowest_modes")), context)
+                         .counts.zero;
     auto& s = context.summary();
     s["zero_modes_nontrivial"] = zero - 3;
     s["A0_used"] = A0;
@@ -302,6 +341,15 @@ std::vector<ParameterSpec> modes_parameters()
                             "max|lambda~| where that is larger (summary zero_threshold_used)")
             .positive(),
         ParameterSpec::seed("seed", 1, "seed of the random start of a floppy particle"),
+        ParameterSpec::integer(
+            "lowest_modes", 0, "1",
+            "0: every mode by the dense eigensolver; K > 0: only the K lowest, by shift-and-invert Lanczos "
+            "on "
+            "the sparse dynamical matrix (large packings). With K: lambda_max from Lanczos, no "
+            "quadratic_mode_exponent and no mode_parts.dat (they need every mode), and K must reach a "
+            "non-zero "
+            "mode (summary modes_computed)")
+            .non_negative(),
     };
 }
 

@@ -11,6 +11,7 @@
 #include "dpm/modes.hpp"
 #include "dpm/modes_scene.hpp"
 #include "dpm/single_particle3d.hpp"
+#include "dpm/sparse_modes.hpp"
 #include "dpm/vtk_frames.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -72,17 +73,27 @@ namespace {
 
 // Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns its counts: zero modes below
 // zero_threshold in magnitude, or below the round-off bound where that is larger (zero_mode_threshold).
-SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, double zero_threshold, RunContext& context)
+// `lambda` holds every mode of the n = degrees_of_freedom, or only the lowest ones (lowest_modes): then
+// lambda_max is the separately computed `largest`, the median non-zero eigenvalue is not written, and the
+// modes must reach a non-zero one (else the zero-mode count is incomplete: InputError).
+SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, Eigen::Index degrees_of_freedom, double largest,
+                              double zero_threshold, RunContext& context)
 {
+    const bool every_mode = lambda.size() == degrees_of_freedom;
     auto& spectrum =
         context.table("eigenvalues.dat", {{"k", "1", "mode index, ascending eigenvalue"},
                                           {"lambda", "k_v v0^(4/3)", "eigenvalue lambda~_k of M, eq. (9.28)"},
                                           {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
     for (Eigen::Index i = 0; i < lambda.size(); ++i)
         spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
-    const double threshold = zero_mode_threshold(lambda, zero_threshold);
+    const double threshold =
+        zero_mode_threshold(degrees_of_freedom, std::max(std::abs(lambda(0)), largest), zero_threshold);
     const SpectrumCounts counts = count_modes(lambda, threshold);
     const int positive = counts.first_positive();
+    if (!every_mode && positive >= lambda.size())
+        throw InputError("lowest_modes = " + std::to_string(lambda.size()) +
+                         ": all of them are zero or negative modes (threshold " + std::to_string(threshold) +
+                         "), so the zero-mode count is incomplete; allowed: a larger lowest_modes");
     auto& s = context.summary();
     s["zero_modes"] = counts.zero;
     s["negative_modes"] = counts.negative;
@@ -92,7 +103,9 @@ SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, double zero_thresho
         counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
     s["lambda_smallest_nonzero"] =
         positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
-    s["lambda_max"] = lambda(lambda.size() - 1);
+    s["lambda_max"] = every_mode ? lambda(lambda.size() - 1) : largest;
+    s["modes_computed"] = lambda.size();
+    if (!every_mode) return counts;
     // The median non-zero eigenvalue: a quadratic (shape or contact) mode whenever the soft band holds
     // fewer than half of the modes (Fig. 9.15d-f).
     s["lambda_median_nonzero"] = positive < lambda.size()
@@ -191,6 +204,29 @@ void write_zero_mode_parts3d(const DpmSystem3d& system, const Eigen::VectorXd& x
     context.summary()["nontrivial_zero_modes"] = dimension;
 }
 
+// The packing's modes: every one by the dense eigensolver (lowest = 0), or the `lowest` lowest by
+// shift-and-invert Lanczos on the sparse matrix (sparse_modes.hpp); `largest` is max lambda [k_c].
+struct ComputedModes3d
+{
+    ModeSpectrum modes;
+    double largest = 0;
+};
+ComputedModes3d compute_modes3d(const DpmSystem3d& system, const Eigen::VectorXd& x, int lowest)
+{
+    if (lowest == 0) {
+        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+        total_energy3d(system, x, nullptr, &m);
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
+        return {{solver.eigenvalues(), solver.eigenvectors()}, solver.eigenvalues()(x.size() - 1)};
+    }
+    if (lowest >= x.size())
+        throw InputError("lowest_modes = " + std::to_string(lowest) + " for " + std::to_string(x.size()) +
+                         " degrees of freedom; allowed: 0 (every mode, dense) or 1 ... " +
+                         std::to_string(x.size() - 1));
+    LowestModes found = lowest_modes(sparse_dynamical_matrix3d(system, x), lowest);
+    return {std::move(found.spectrum), found.largest_eigenvalue};
+}
+
 // Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
 // residual force f shifts the zero modes by ~f R). The protocol moves a packing off a saddle and compresses
 // it again (jam3d.hpp); one left after `saddle_escapes` moves shows as negative modes (decision
@@ -246,23 +282,26 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     const double zero_threshold = p.real("zero_threshold");
     const double force_max = polish_for_modes(energy, j.x, j.pressure_unit);
 
-    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
-    total_energy3d(j.system, j.x, nullptr, &m);
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
-    const Eigen::VectorXd lambda = solver.eigenvalues() / j.eigenvalue_unit;
-    const SpectrumCounts counts = write_spectrum(lambda, zero_threshold, context);
+    const int lowest = static_cast<int>(p.integer("lowest_modes"));
+    const auto started = std::chrono::steady_clock::now();
+    const ComputedModes3d computed = compute_modes3d(j.system, j.x, lowest);
+    const double spectrum_seconds = seconds_since(started);
+    const Eigen::VectorXd lambda = computed.modes.eigenvalues / j.eigenvalue_unit;
+    const bool every_mode = lowest == 0;
+    const SpectrumCounts counts =
+        write_spectrum(lambda, j.x.size(), computed.largest / j.eigenvalue_unit, zero_threshold, context);
     const int positive = counts.first_positive();
 
     // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
     // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
-    const auto& modes = solver.eigenvectors();
+    const auto& modes = computed.modes.eigenvectors;
     std::vector<bool> quartic(lambda.size(), false);
     for (Eigen::Index k = positive; k < lambda.size(); ++k)
         quartic[k] = quartic_energy_change(energy_change_along(energy, j.x, modes.col(k), 0.1),
-                                           solver.eigenvalues()(k), 0.1, 3.0);
+                                           computed.modes.eigenvalues(k), 0.1, 3.0);
     const double soft = p.real("soft_threshold");
     write_mode_energy3d(energy, j, lambda, modes, positive, soft, quartic, context);
-    write_softest_mode3d(j.system, j.x, solver.eigenvalues(), modes, positive, context);
+    write_softest_mode3d(j.system, j.x, computed.modes.eigenvalues, modes, positive, context);
     // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
     // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
     const std::vector<int> contacts = contact_counts3d(j.system, j.x);
@@ -274,9 +313,13 @@ void run_packing_modes3d(const Parameters& p, RunContext& context)
     s["modes"] = lambda.size();
     s["rattlers"] = rattlers;
     s["zero_modes_without_rattlers"] = counts.zero - free_modes * rattlers;
-    s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
-    // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
-    s["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
+    s["spectrum_seconds"] = spectrum_seconds; // reported, never asserted
+    // Counts over every mode: only with the dense spectrum.
+    if (every_mode) {
+        s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
+        // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
+        s["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
+    }
     s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;
     s["phi"] = packing_fraction3d(j.system, j.x);
     s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
@@ -295,6 +338,9 @@ void run_modes3d(const Parameters& p, RunContext& context)
         run_packing_modes3d(p, context);
         return;
     }
+    if (p.integer("lowest_modes") != 0)
+        throw InputError("lowest_modes = " + std::to_string(p.integer("lowest_modes")) +
+                         " with particles = 1; allowed: 0 (a single particle's spectrum is dense and small)");
     const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
     Stiffness3d k;
     k.ka = p.real("ka");
@@ -311,7 +357,8 @@ void run_modes3d(const Parameters& p, RunContext& context)
     shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &m);
     const Eigen::VectorXd lambda =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
-    const SpectrumCounts counts = write_spectrum(lambda, p.real("zero_threshold"), context);
+    const SpectrumCounts counts = write_spectrum(lambda, lambda.size(), lambda.cwiseAbs().maxCoeff(),
+                                                 p.real("zero_threshold"), context);
 
     const Eigen::VectorXd& x = particle.x;
     // ParaView: one frame, the relaxed particle (vertex diameter 1: the mesh's own unit here).
@@ -389,6 +436,14 @@ std::vector<ParameterSpec> modes3d_parameters()
                             "Delta L/L below this is kept and P_t approached from above by decompression (a "
                             "rearrangement that makes P jump over the window); 0: every overshoot is undone "
                             "and the step halved (decision dpm-3d-jam-paper-size)")
+            .non_negative(),
+        ParameterSpec::integer(
+            "lowest_modes", 0, "1",
+            "packing: 0 = every mode by the dense eigensolver; K > 0 = only the K lowest, by "
+            "shift-and-invert "
+            "Lanczos on the sparse dynamical matrix (large packings). With K: lambda_max from Lanczos, no "
+            "lambda_median_nonzero, quartic_modes or soft_modes (they need every mode), and K must reach a "
+            "non-zero mode (summary modes_computed)")
             .non_negative(),
     };
 }

@@ -14,30 +14,32 @@ int vertex(int first, int n, int i)
 }
 
 // k_a/2 (a - a0)^2 with a = sum of the shoelace terms of the edges: gradient k_a (a - a0) grad a, Hessian
-// k_a (grad a grad a^T + (a - a0) hess a); grad a and hess a are assembled from the local shoelace terms.
+// k_a (grad a grad a^T + (a - a0) hess a); grad a and hess a are assembled from the local shoelace terms over
+// the particle's own 2n coordinates (the rank-one term couples every pair of them, and only them).
 double area_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
-                   Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
+                   Eigen::VectorXd* gradient, HessianSink hessian)
 {
-    const int dofs = static_cast<int>(x.size());
-    Eigen::VectorXd grad_a = Eigen::VectorXd::Zero(gradient || hessian ? dofs : 0);
-    Eigen::MatrixXd hess_a = Eigen::MatrixXd::Zero(hessian ? dofs : 0, hessian ? dofs : 0);
+    const Eigen::VectorXd own_x = x.segment(2 * first, 2 * n);
+    Eigen::VectorXd grad_a = Eigen::VectorXd::Zero(gradient || hessian ? 2 * n : 0);
+    Eigen::MatrixXd hess_a = Eigen::MatrixXd::Zero(hessian ? 2 * n : 0, hessian ? 2 * n : 0);
     const auto term = [](const auto& local) { return shoelace_term(local); };
     double area = 0;
     for (int i = 0; i < n; ++i) {
-        const std::array<int, 2> points{vertex(first, n, i), vertex(first, n, i + 1)};
-        area += add_local_term<2, 2>(term, points, gather<2, 2>(x, points),
+        const std::array<int, 2> points{vertex(0, n, i), vertex(0, n, i + 1)};
+        area += add_local_term<2, 2>(term, points, gather<2, 2>(own_x, points),
                                      gradient || hessian ? &grad_a : nullptr, hessian ? &hess_a : nullptr);
     }
     const double deviation = area - shape.a0;
-    if (gradient) *gradient += shape.ka * deviation * grad_a;
-    if (hessian) *hessian += shape.ka * (grad_a * grad_a.transpose() + deviation * hess_a);
+    if (gradient) gradient->segment(2 * first, 2 * n) += shape.ka * deviation * grad_a;
+    if (hessian)
+        hessian.add(2 * first, 2 * first, shape.ka * (grad_a * grad_a.transpose() + deviation * hess_a));
     return harmonic_penalty(shape.ka, area, shape.a0);
 }
 
 } // namespace
 
 double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
-                    Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms)
+                    Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {
     double energy = 0;
     if ((terms & area_term) && shape.ka != 0) energy += area_energy(shape, x, first, n, gradient, hessian);

@@ -118,7 +118,7 @@ struct LineTensionEnergy
 // (counter-clockwise, unwrapped: no periodic image inside a particle). Adds -(forces), i.e. the gradient,
 // and the Hessian into `gradient` and `hessian` when they are given. `terms` selects terms of eq. (9.1).
 double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
-                    Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms = all_shape_terms);
+                    Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms = all_shape_terms);
 
 // Signed area of that particle's polygon.
 double particle_area(const Eigen::VectorXd& x, int first, int n);

@@ -15,23 +15,26 @@ std::array<int, 4> edge_points(const MeshEdge& e, int first)
 }
 
 // k_v/2 (v - v0)^2 with v = sum of the face volumes: gradient k_v (v - v0) grad v, Hessian
-// k_v (grad v grad v^T + (v - v0) hess v); grad v and hess v are assembled from the local face volumes.
+// k_v (grad v grad v^T + (v - v0) hess v); grad v and hess v are assembled from the local face volumes over
+// the particle's own coordinates (the rank-one term couples every pair of them, and only them).
 double volume_energy(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
-                     int first, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian)
+                     int first, Eigen::VectorXd* gradient, HessianSink hessian)
 {
-    const auto dofs = x.size();
+    const int dofs = 3 * mesh.vertex_count();
+    const Eigen::VectorXd own_x = x.segment(3 * first, dofs);
     Eigen::VectorXd grad_v = Eigen::VectorXd::Zero(gradient || hessian ? dofs : 0);
     Eigen::MatrixXd hess_v = Eigen::MatrixXd::Zero(hessian ? dofs : 0, hessian ? dofs : 0);
     const auto term = [](const auto& local) { return face_volume(local); };
     double volume = 0;
     for (const auto& f : mesh.faces) {
-        const auto points = face_points(f, first);
-        volume += add_local_term<3, 3>(term, points, gather<3, 3>(x, points),
+        const auto points = face_points(f, 0);
+        volume += add_local_term<3, 3>(term, points, gather<3, 3>(own_x, points),
                                        gradient || hessian ? &grad_v : nullptr, hessian ? &hess_v : nullptr);
     }
     const double deviation = volume - shape.v0;
-    if (gradient) *gradient += shape.kv * deviation * grad_v;
-    if (hessian) *hessian += shape.kv * (grad_v * grad_v.transpose() + deviation * hess_v);
+    if (gradient) gradient->segment(3 * first, dofs) += shape.kv * deviation * grad_v;
+    if (hessian)
+        hessian.add(3 * first, 3 * first, shape.kv * (grad_v * grad_v.transpose() + deviation * hess_v));
     return harmonic_penalty(shape.kv, volume, shape.v0);
 }
 
@@ -118,7 +121,7 @@ LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x)
 }
 
 double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
-                      int first, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian, unsigned terms)
+                      int first, Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {
     if (gradient && !hessian) return shape_energy_with_gradient3d(shape, mesh, x, first, *gradient, terms);
     double energy = 0;

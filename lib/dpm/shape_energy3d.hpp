@@ -151,7 +151,7 @@ struct SurfaceTensionEnergy
 // given (the gradient alone from the analytic local gradients, with the Hessian from AutoDiff); `terms`
 // selects terms of eq. (9.2).
 double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
-                      int first, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian,
+                      int first, Eigen::VectorXd* gradient, HessianSink hessian,
                       unsigned terms = all_shape_terms3d);
 
 // Geometric measures of that particle at x.

@@ -51,7 +51,7 @@ struct AnchorEnergy
 } // namespace
 
 double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                    Eigen::MatrixXd* hessian, unsigned parts)
+                    HessianSink hessian, unsigned parts)
 {
     double energy = 0;
     if (parts & shape_part)

@@ -77,7 +77,7 @@ enum EnergyPart : unsigned { shape_part = 1u, interaction_part = 2u, anchor_part
 
 // Total energy of the parts selected; adds the gradient and the Hessian when they are given.
 double total_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                    Eigen::MatrixXd* hessian, unsigned parts = all_parts);
+                    HessianSink hessian, unsigned parts = all_parts);
 
 // Minimum image of a separation in a periodic rectangular box of sides L = (L_x, L_y).
 inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vector2d& L)

@@ -88,7 +88,7 @@ void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Cont
 } // namespace
 
 double interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                            Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial)
+                            HessianSink hessian, Eigen::Matrix3d* virial)
 {
     if (s.interaction == InteractionKind::none) return 0;
     if (s.interaction == InteractionKind::smooth)
@@ -119,7 +119,7 @@ std::vector<int> contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x
 }
 
 double total_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                      Eigen::MatrixXd* hessian)
+                      HessianSink hessian)
 {
     double energy = 0;
     for (const Particle3d& p : s.particles)

@@ -64,11 +64,11 @@ struct DpmSystem3d
 // Hessian when given. `virial`, when given, accumulates the force moment sum r_a F_b of every contact at
 // its minimum-image coordinates (the pair part of the 3D analogue of eq. 9.26).
 double interaction_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                            Eigen::MatrixXd* hessian, Eigen::Matrix3d* virial = nullptr);
+                            HessianSink hessian, Eigen::Matrix3d* virial = nullptr);
 
 // Shape energies (eq. 9.2) of all particles plus the interaction; adds the gradient and the Hessian.
 double total_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                      Eigen::MatrixXd* hessian);
+                      HessianSink hessian);
 
 // Stress tensor of a static periodic packing, the 3D analogue of eq. (9.26):
 //   Sigma_ab = (1/L^3) [ sum_mu sum_i r_{mu i,a} F^shape_{mu i,b} - sum_{contacts} r_{ij,a} F_{ij,b} ],
