@@ -53,22 +53,21 @@ double longest_edge(const DpmSystem& system, const Eigen::VectorXd& x)
 }
 
 // One image per particle pair is exact only if no particle can touch two images of another: the box side
-// must exceed twice the largest pair reach 2 R + sigma. Until the next build R grows by at most the skin
-// (the vertex mean and each vertex move less than skin/2).
-void require_one_image(const DpmSystem& system, const Eigen::VectorXd& x, double skin)
+// must exceed twice the largest pair reach 2 R + sigma, checked at every build (as the particle-level
+// search checked it at every evaluation).
+void require_one_image(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     if (!system.box) return;
     double largest_reach = 0;
     for (const Particle& p : system.particles) {
         const auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
         const Eigen::Vector2d centre = v.rowwise().mean();
-        const double radius = (v.colwise() - centre).colwise().norm().maxCoeff() + skin;
+        const double radius = (v.colwise() - centre).colwise().norm().maxCoeff();
         largest_reach = std::max(largest_reach, 2 * radius + p.sigma);
     }
     if (2 * largest_reach >= system.box->minCoeff())
         throw NumericalError("periodic box side " + std::to_string(system.box->minCoeff()) +
-                                 " below twice the largest pair reach " + std::to_string(largest_reach) +
-                                 " (with the contact list's skin)",
+                                 " below twice the largest pair reach " + std::to_string(largest_reach),
                              0, "too few particles for the box; use more particles");
 }
 
@@ -98,7 +97,7 @@ ContactList::ContactList(const DpmSystem& system, const Eigen::VectorXd& x)
       list_(contact_cutoff(system, x, skin_per_sigma * largest_sigma(system)),
             skin_per_sigma * largest_sigma(system), system.box, system.box ? system.lees_edwards_strain : 0.0)
 {
-    require_one_image(system, x, skin());
+    require_one_image(system, x);
     const int n = system.vertex_count();
     for (std::size_t m = 0; m < system.particles.size(); ++m)
         owner_.insert(owner_.end(), static_cast<std::size_t>(system.particles[m].count), static_cast<int>(m));

@@ -50,7 +50,7 @@ class ContactList
   public:
     // Builds the list of `system` at coordinates x. NumericalError if the periodic box is too small for one
     // image per particle pair (side below twice the largest pair reach 2 R + sigma, R the largest vertex
-    // distance from a particle's vertex mean, grown by the skin that may pass before the next build).
+    // distance from a particle's vertex mean).
     ContactList(const DpmSystem& system, const Eigen::VectorXd& x);
 
     // Whether the list holds every contact of `system` at x (same box, strain, particles and interaction,

@@ -23,8 +23,8 @@
 // Valid for particles whose vertices are counter-clockwise and unwrapped, and overlaps smaller than
 // sigma_mb: a smooth vertex that has crossed an edge line (d <= 0) feels no edge term, so nothing pushes
 // it back out. In a periodic box each pair interacts through one image only, so the box side must
-// exceed twice the largest particle reach 2 R + sigma (R: largest vertex distance from the vertex mean,
-// plus the list's skin), else NumericalError.
+// exceed twice the largest particle reach 2 R + sigma (R: largest vertex distance from the vertex mean;
+// checked whenever the contact list is built), else NumericalError.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"
