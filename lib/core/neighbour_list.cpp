@@ -7,11 +7,14 @@
 namespace softgrain {
 
 template <int Dim>
-NeighbourList<Dim>::NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box)
-    : cutoff_(cutoff), skin_(skin), box_(periodic_box)
+NeighbourList<Dim>::NeighbourList(double cutoff, double skin, std::optional<Vec<Dim>> periodic_box,
+                                  double shear_strain)
+    : cutoff_(cutoff), skin_(skin), box_(periodic_box), shear_strain_(shear_strain)
 {
     if (!(cutoff > 0) || !(skin >= 0))
         throw std::invalid_argument("NeighbourList: need cutoff > 0, skin >= 0");
+    if (shear_strain != 0 && !periodic_box)
+        throw std::invalid_argument("NeighbourList: a shear strain needs a periodic box");
 }
 
 template <int Dim>
@@ -48,14 +51,17 @@ void NeighbourList<Dim>::build(const Points<Dim>& positions)
         extent.setOnes();
     }
 
-    // Cells of side >= reach; in a periodic box the side divides the box exactly.
+    // Cells of side >= reach (along x >= reach sqrt(1 + gamma^2) under shear: the unsheared separation of
+    // a pair within reach); in a periodic box the side divides the box exactly.
     Eigen::Matrix<int, Dim, 1> cells;
     Vec<Dim> side;
     for (int k = 0; k < Dim; ++k) {
-        cells[k] = std::max(1, static_cast<int>(std::floor(extent[k] / reach)));
+        const double least_side = k == 0 ? reach * std::sqrt(1 + shear_strain_ * shear_strain_) : reach;
+        cells[k] = std::max(1, static_cast<int>(std::floor(extent[k] / least_side)));
         side[k] = extent[k] / cells[k];
     }
-    const auto cell_of = [&](const Vec<Dim>& x) {
+    const auto cell_of = [&](Vec<Dim> x) {
+        x.x() -= shear_strain_ * x.y(); // unshear: the images form a rectangular lattice
         Eigen::Matrix<int, Dim, 1> c;
         for (int k = 0; k < Dim; ++k) {
             double u = (x[k] - origin[k]) / side[k];

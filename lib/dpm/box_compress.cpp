@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 #include <string>
 
 namespace softgrain::dpm {
@@ -151,32 +152,18 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
 double largest_interparticle_overlap(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     double largest = 0;
-    for (std::size_t a = 0; a < system.particles.size(); ++a)
-        for (std::size_t b = a + 1; b < system.particles.size(); ++b) {
-            const Particle &p = system.particles[a], &q = system.particles[b];
-            const double s = 0.5 * (p.sigma + q.sigma);
-            for (int i = p.first; i < p.first + p.count; ++i)
-                for (int j = q.first; j < q.first + q.count; ++j)
-                    largest = std::max(largest, s - (x.segment<2>(2 * i) - x.segment<2>(2 * j)).norm());
-        }
+    for (const VertexContact& c : vertex_contacts(system, x))
+        largest = std::max(largest, c.sigma - c.r.norm());
     return largest;
 }
 
 double vertex_contacts_per_particle_contact(const DpmSystem& system, const Eigen::VectorXd& x)
 {
-    int vertex_pairs = 0, particle_pairs = 0;
-    for (std::size_t a = 0; a < system.particles.size(); ++a)
-        for (std::size_t b = a + 1; b < system.particles.size(); ++b) {
-            const Particle &p = system.particles[a], &q = system.particles[b];
-            const double s = 0.5 * (p.sigma + q.sigma);
-            int pairs = 0;
-            for (int i = p.first; i < p.first + p.count; ++i)
-                for (int j = q.first; j < q.first + q.count; ++j)
-                    pairs += (x.segment<2>(2 * i) - x.segment<2>(2 * j)).norm() < s;
-            vertex_pairs += pairs;
-            particle_pairs += pairs > 0;
-        }
-    return particle_pairs ? double(vertex_pairs) / particle_pairs : 0.0;
+    const std::vector<VertexContact> contacts = vertex_contacts(system, x);
+    std::set<std::pair<int, int>> particle_pairs;
+    for (const VertexContact& c : contacts)
+        particle_pairs.insert(std::minmax(c.a, c.b));
+    return particle_pairs.empty() ? 0.0 : double(contacts.size()) / double(particle_pairs.size());
 }
 
 } // namespace softgrain::dpm

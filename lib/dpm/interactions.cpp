@@ -1,12 +1,10 @@
 #include "dpm/interactions.hpp"
 
+#include "dpm/contact_list.hpp"
 #include "dpm/system.hpp"
 
-#include "core/errors.hpp"
-#include "core/neighbour_list.hpp"
-
 #include <algorithm>
-#include <string>
+#include <array>
 
 namespace softgrain::dpm {
 
@@ -17,98 +15,141 @@ Eigen::Vector2d point(const Eigen::VectorXd& x, int v)
     return x.segment<2>(2 * v);
 }
 
-// Centre (vertex mean) and radius of a circle around a particle's vertices.
-std::pair<Eigen::Vector2d, double> bounding_circle(const Particle& p, const Eigen::VectorXd& x)
+// The spring k/2 (sigma - r)^2 between vertices i and j at local positions r_i and r_j (j's image), adding
+// its derivatives. The gradient alone (FIRE) is analytic: dU/dr_j = -k (sigma - r) (r_j - r_i)/r = -dU/dr_i
+// (verification/dpm/contact_list.cpp checks it against AutoDiff); Hessians and virials come from AutoDiff.
+double add_vertex_spring(const VertexSpringEnergy& spring, int i, int j, const Eigen::Vector2d& ri,
+                         const Eigen::Vector2d& rj, Eigen::VectorXd* gradient, HessianSink hessian,
+                         Eigen::Matrix2d* virial)
 {
-    const auto v = x.segment(2 * p.first, 2 * p.count).reshaped(2, p.count);
-    const Eigen::Vector2d centre = v.rowwise().mean();
-    return {centre, (v.colwise() - centre).colwise().norm().maxCoeff()};
+    if (hessian || virial) {
+        Eigen::Vector4d local;
+        local << ri, rj;
+        return add_local_term<2, 2>(spring, std::array<int, 2>{i, j}, local, gradient, hessian, virial);
+    }
+    const Eigen::Vector2d d = rj - ri;
+    const double r = d.norm(), overlap = spring.sigma - r;
+    if (gradient) {
+        const Eigen::Vector2d towards_j = (-spring.k * overlap / r) * d;
+        gradient->segment<2>(2 * j) += towards_j;
+        gradient->segment<2>(2 * i) -= towards_j;
+    }
+    return 0.5 * spring.k * overlap * overlap;
 }
 
-// The translation that brings particle b to its image closest to particle a (zero without a box).
-Eigen::Vector2d image_shift(const DpmSystem& s, const Eigen::Vector2d& ca, const Eigen::Vector2d& cb)
+// Eq. (9.4) over the listed vertex pairs, each once, in (i, j) order.
+double rough_contacts(const DpmSystem& s, const ContactList& list, const Eigen::VectorXd& x,
+                      Eigen::VectorXd* gradient, HessianSink hessian, Eigen::Matrix2d* virial)
 {
-    const Eigen::Vector2d d = cb - ca;
-    return s.image(d) - d;
-}
-
-// Local coordinates of `points`, with `shift` added to those of particle b (periodic image).
-template <int K>
-Eigen::Matrix<double, 2 * K, 1> gather_image(const Eigen::VectorXd& x, const std::array<int, K>& points,
-                                             const Particle& b, const Eigen::Vector2d& shift)
-{
-    Eigen::Matrix<double, 2 * K, 1> local = gather<2, K>(x, points);
-    for (int k = 0; k < K; ++k)
-        if (points[k] >= b.first && points[k] < b.first + b.count) local.template segment<2>(2 * k) += shift;
-    return local;
-}
-
-// Eq. (9.4) for every vertex pair of particles a and b.
-double rough_pair(const DpmSystem& s, const Particle& a, const Particle& b, const Eigen::Vector2d& shift,
-                  const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
-                  Eigen::Matrix2d* virial)
-{
-    const double sigma = 0.5 * (a.sigma + b.sigma);
-    const VertexSpringEnergy spring{s.kc, sigma};
     double energy = 0;
-    for (int i = a.first; i < a.first + a.count; ++i)
-        for (int j = b.first; j < b.first + b.count; ++j) {
-            if ((point(x, j) + shift - point(x, i)).squaredNorm() >= sigma * sigma)
-                continue; // Theta(sigma - r)
-            const std::array<int, 2> pair{i, j};
-            energy += add_local_term<2, 2>(spring, pair, gather_image<2>(x, pair, b, shift), gradient,
-                                           hessian, virial);
-        }
+    for (const VertexPair& pair : list.pairs()) {
+        const VertexNeighbour& n = pair.neighbour;
+        const Eigen::Vector2d ri = point(x, pair.i), rj = point(x, n.j) + n.shift;
+        if ((rj - ri).squaredNorm() >= n.sigma * n.sigma) continue; // Theta(sigma - r)
+        energy += add_vertex_spring({s.kc, n.sigma}, pair.i, n.j, ri, rj, gradient, hessian, virial);
+    }
     return energy;
 }
 
-// Eqs. (9.6), (9.8), (9.9) for every vertex i of particle a against particle b (one ordered pair), with
-// the 1/2 of eq. (9.5).
-double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Particle& b,
-                              const Eigen::Vector2d& shift, const Eigen::VectorXd& x,
-                              Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms,
-                              Eigen::Matrix2d* virial)
+// Eqs. (9.6), (9.8), (9.9) of vertex i (particle a) against particle b, whose vertices are imaged by
+// `shift`, with the 1/2 of eq. (9.5) (one ordered pair).
+class SmoothVertexParticle
 {
-    if (b.count < 2) return 0; // a disk has no edges
-    const double sigma = 0.5 * (a.sigma + b.sigma);
-    const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5)
-    const VertexEdgeEnergy edge{k, sigma};
-    const VertexSpringEnergy convex{k, sigma}, concave{-k, sigma};
-    const auto vertex_of_b = [&](int j) { return b.first + ((j % b.count) + b.count) % b.count; };
-    const auto pos = [&](int v) { return Eigen::Vector2d(point(x, v) + shift); }; // b's vertices, imaged
-    const auto distance_to_edge = [&](const Eigen::Vector2d& p, int j) {          // d from edge j: (j-1) -> j
-        Eigen::Matrix<double, 6, 1> local;
-        local << p, pos(vertex_of_b(j - 1)), pos(vertex_of_b(j));
-        return signed_edge_distance(local);
-    };
-    double energy = 0;
-    for (int i = a.first; i < a.first + a.count; ++i) {
-        const Eigen::Vector2d p = point(x, i);
-        for (int j = 0; j < b.count; ++j) {
-            const int vj = vertex_of_b(j), previous = vertex_of_b(j - 1), next = vertex_of_b(j + 1);
-            const Eigen::Vector2d rj = pos(vj), rp = pos(previous), rn = pos(next);
-            // U^edge, eq. (9.6), edge j from vertex j-1 to vertex j.
-            if (terms & edge_smooth) {
-                const double d = distance_to_edge(p, j);
-                if (d > 0 && d < sigma && (p - rp).dot(rj - rp) > 0 && (p - rj).dot(rp - rj) > 0) {
-                    const std::array<int, 3> triple{i, previous, vj};
-                    energy += add_local_term<2, 3>(edge, triple, gather_image<3>(x, triple, b, shift),
-                                                   gradient, hessian, virial);
-                }
+  public:
+    SmoothVertexParticle(const DpmSystem& s, const Eigen::VectorXd& x, int i, const Particle& b,
+                         const Eigen::Vector2d& shift, double sigma, unsigned terms)
+        : x_(x), i_(i), b_(b), shift_(shift), sigma_(sigma), terms_(terms),
+          p_(point(x, i)), edge_{0.5 * s.kc, sigma}, convex_{0.5 * s.kc, sigma}, concave_{-0.5 * s.kc, sigma}
+    {
+    }
+
+    // The terms of b's vertex j (local index): U^edge of edge j (from vertex j-1 to vertex j) when
+    // `with_edge`, U^concave and U^convex at vertex j when `with_corner`. Order as in the sum of eq. (9.5).
+    double add(int j, bool with_edge, bool with_corner, Eigen::VectorXd* gradient, HessianSink hessian,
+               Eigen::Matrix2d* virial) const
+    {
+        const int vj = vertex_of_b(j), previous = vertex_of_b(j - 1), next = vertex_of_b(j + 1);
+        const Eigen::Vector2d rj = position(vj), rp = position(previous), rn = position(next);
+        double energy = 0;
+        // U^edge, eq. (9.6): 0 < d < sigma and vertex i projects inside edge j.
+        if (with_edge && (terms_ & edge_smooth)) {
+            const double d = distance_to_edge(rp, rj);
+            if (d > 0 && d < sigma_ && (p_ - rp).dot(rj - rp) > 0 && (p_ - rj).dot(rp - rj) > 0) {
+                Eigen::Matrix<double, 6, 1> local;
+                local << p_, rp, rj;
+                energy += add_local_term<2, 3>(edge_, std::array<int, 3>{i_, previous, vj}, local, gradient,
+                                               hessian, virial);
             }
-            const double r2 = (p - rj).squaredNorm();
-            if (r2 >= sigma * sigma) continue; // Theta(sigma - r) of eqs. (9.8), (9.9)
-            const std::array<int, 2> pair{i, vj};
-            const double towards_previous = (p - rj).dot(rp - rj), towards_next = (p - rj).dot(rn - rj);
-            // U^concave, eq. (9.8): inside the strips of edges j and j+1 at vertex j and outside both.
-            if ((terms & concave_smooth) && towards_previous > 0 && towards_next > 0 &&
-                distance_to_edge(p, j) > 0 && distance_to_edge(p, j + 1) > 0)
-                energy += add_local_term<2, 2>(concave, pair, gather_image<2>(x, pair, b, shift), gradient,
-                                               hessian, virial);
-            // U^convex, eq. (9.9): beyond both edges at vertex j.
-            if ((terms & convex_smooth) && towards_previous < 0 && towards_next < 0)
-                energy += add_local_term<2, 2>(convex, pair, gather_image<2>(x, pair, b, shift), gradient,
-                                               hessian, virial);
+        }
+        if (!with_corner || (p_ - rj).squaredNorm() >= sigma_ * sigma_) return energy; // Theta(sigma - r)
+        const double towards_previous = (p_ - rj).dot(rp - rj), towards_next = (p_ - rj).dot(rn - rj);
+        // U^concave, eq. (9.8): inside the strips of edges j and j+1 at vertex j and outside both.
+        if ((terms_ & concave_smooth) && towards_previous > 0 && towards_next > 0 &&
+            distance_to_edge(rp, rj) > 0 && distance_to_edge(rj, rn) > 0)
+            energy += add_vertex_spring(concave_, i_, vj, p_, rj, gradient, hessian, virial);
+        // U^convex, eq. (9.9): beyond both edges at vertex j.
+        if ((terms_ & convex_smooth) && towards_previous < 0 && towards_next < 0)
+            energy += add_vertex_spring(convex_, i_, vj, p_, rj, gradient, hessian, virial);
+        return energy;
+    }
+
+  private:
+    int vertex_of_b(int j) const { return b_.first + ((j % b_.count) + b_.count) % b_.count; }
+    Eigen::Vector2d position(int v) const { return point(x_, v) + shift_; }
+    double distance_to_edge(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const
+    {
+        Eigen::Matrix<double, 6, 1> local;
+        local << p_, from, to;
+        return signed_edge_distance(local);
+    }
+
+    const Eigen::VectorXd& x_;
+    int i_;
+    const Particle& b_;
+    Eigen::Vector2d shift_;
+    double sigma_;
+    unsigned terms_;
+    Eigen::Vector2d p_;
+    VertexEdgeEnergy edge_;
+    VertexSpringEnergy convex_, concave_;
+};
+
+// Eq. (9.5) over the listed candidates: for each vertex i and each other particle b with candidates near
+// i, the edges that end at a candidate and the corners at the candidates, in b's vertex order. Every active
+// term has a candidate end (contact_list.hpp), so this is the full sum.
+double smooth_contacts(const DpmSystem& s, const ContactList& list, const Eigen::VectorXd& x,
+                       Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms,
+                       Eigen::Matrix2d* virial)
+{
+    enum : unsigned char { edge = 1, corner = 2 };
+    std::vector<unsigned char> marks;
+    std::vector<int> marked;
+    double energy = 0;
+    for (int i = 0; i < s.vertex_count(); ++i) {
+        const std::span<const VertexNeighbour> near = list.neighbours(i);
+        for (std::size_t first = 0; first < near.size();) {
+            const Particle& b = s.particles[list.particle_of(near[first].j)];
+            std::size_t end = first;
+            while (end < near.size() && near[end].j < b.first + b.count)
+                ++end;
+            if (b.count >= 2) { // a disk has no edges
+                marks.assign(static_cast<std::size_t>(b.count), 0);
+                marked.clear();
+                const auto mark = [&](int j, unsigned char what) {
+                    if (!marks[j]) marked.push_back(j);
+                    marks[j] |= what;
+                };
+                for (std::size_t k = first; k < end; ++k) {
+                    const int j = near[k].j - b.first;
+                    mark(j, edge | corner);        // edge j ends at vertex j
+                    mark((j + 1) % b.count, edge); // edge j+1 starts there
+                }
+                std::sort(marked.begin(), marked.end());
+                const SmoothVertexParticle pair(s, x, i, b, near[first].shift, near[first].sigma, terms);
+                for (const int j : marked)
+                    energy += pair.add(j, marks[j] & edge, marks[j] & corner, gradient, hessian, virial);
+            }
+            first = end;
         }
     }
     return energy;
@@ -119,47 +160,11 @@ double smooth_vertex_particle(const DpmSystem& s, const Particle& a, const Parti
 double interaction_energy(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                           HessianSink hessian, unsigned smooth_terms, Eigen::Matrix2d* virial)
 {
-    double energy = 0;
-    const auto& particles = system.particles;
-    std::vector<std::pair<Eigen::Vector2d, double>> circles;
-    double largest_reach = 0;
-    for (const Particle& p : particles) {
-        circles.push_back(bounding_circle(p, x));
-        largest_reach = std::max(largest_reach, 2 * circles.back().second + p.sigma);
-    }
-    // One image per particle pair is exact only if no particle can touch two images of another.
-    if (system.box && 2 * largest_reach >= system.box->minCoeff())
-        throw NumericalError("periodic box side " + std::to_string(system.box->minCoeff()) +
-                                 " below twice the largest pair reach " + std::to_string(largest_reach),
-                             0, "too few particles for the box; use more particles");
-    const auto interact = [&](std::size_t m, std::size_t b) {
-        const Particle &pm = particles[m], &pb = particles[b];
-        const Eigen::Vector2d shift = image_shift(system, circles[m].first, circles[b].first);
-        const double reach = circles[m].second + circles[b].second + 0.5 * (pm.sigma + pb.sigma);
-        if ((circles[b].first + shift - circles[m].first).squaredNorm() >= reach * reach) return;
-        if (system.interaction == InteractionKind::rough)
-            energy += rough_pair(system, pm, pb, shift, x, gradient, hessian, virial);
-        else if (system.interaction == InteractionKind::smooth)
-            energy +=
-                smooth_vertex_particle(system, pm, pb, shift, x, gradient, hessian, smooth_terms, virial) +
-                smooth_vertex_particle(system, pb, pm, -shift, x, gradient, hessian, smooth_terms, virial);
-    };
-    if (system.cell_list && system.lees_edwards_strain == 0 && !particles.empty()) {
-        // Every pair within reach is closer than the largest reach: the list holds them all, sorted (m < b)
-        // as the all-pairs loop visits them.
-        Points<2> centres(2, particles.size());
-        for (std::size_t m = 0; m < particles.size(); ++m)
-            centres.col(m) = circles[m].first;
-        NeighbourList<2> list(largest_reach, 0.0, system.box);
-        list.update(centres);
-        for (const auto& [m, b] : list.pairs())
-            interact(m, b);
-    } else {
-        for (std::size_t m = 0; m < particles.size(); ++m)
-            for (std::size_t b = m + 1; b < particles.size(); ++b)
-                interact(m, b);
-    }
-    return energy;
+    if (system.particles.empty() || system.interaction == InteractionKind::none) return 0;
+    const std::shared_ptr<const ContactList> list = system.contacts.list(system, x);
+    if (system.interaction == InteractionKind::rough)
+        return rough_contacts(system, *list, x, gradient, hessian, virial);
+    return smooth_contacts(system, *list, x, gradient, hessian, smooth_terms, virial);
 }
 
 } // namespace softgrain::dpm

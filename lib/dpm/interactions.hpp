@@ -15,13 +15,16 @@
 //   The 1/2 of eq. (9.5) multiplies every ordered term as printed (decision dpm-smooth-half).
 // Particles with one vertex are disks: they carry no edges (they interact through their vertex only).
 // Sign: repulsive, U >= 0 (U^concave < 0 only cancels a doubly counted edge term); the functions add the
-// gradient dU/dx = minus the forces. Units: energies [E], k_c [E/L^2], lengths [L]. The gradient and the
-// Hessian come from local AutoDiff.
+// gradient dU/dx = minus the forces. Units: energies [E], k_c [E/L^2], lengths [L]. The Hessian comes from
+// local AutoDiff, and so does the gradient except that of the vertex springs when only the gradient is
+// asked for (FIRE), which is analytic.
+// The terms are found by one traversal, the system's vertex-level Verlet list (contact_list.hpp), which
+// handles the periodic images and Lees-Edwards shear.
 // Valid for particles whose vertices are counter-clockwise and unwrapped, and overlaps smaller than
 // sigma_mb: a smooth vertex that has crossed an edge line (d <= 0) feels no edge term, so nothing pushes
 // it back out. In a periodic box each pair interacts through one image only, so the box side must
-// exceed twice the largest particle reach 2 R + sigma (R: largest vertex distance from the vertex mean),
-// else NumericalError.
+// exceed twice the largest particle reach 2 R + sigma (R: largest vertex distance from the vertex mean;
+// checked whenever the contact list is built), else NumericalError.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"

@@ -32,7 +32,6 @@ JamResult jam(const JamOptions& o)
     DpmSystem& s = out.system;
     s.interaction = InteractionKind::rough;
     s.kc = 1.0;
-    s.cell_list = true; // O(N) pair search; bit-identical to all pairs (verification/dpm/cell_list.cpp)
     Rng rng(o.seed);
     const bool disks = o.model == "smooth_disk";
     if (disks) {

@@ -47,48 +47,51 @@ bool inside_polygon(const Eigen::Vector2d& p, const Eigen::Matrix2Xd& v)
 
 } // namespace
 
-PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x, std::size_t m)
+std::vector<PackingAreas> particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     if (!system.box) throw InputError("packing fraction: the system has no periodic box");
     const double pi = std::numbers::pi;
-    const Particle& p = system.particles[m];
-    PackingAreas t;
-    t.polygon = particle_area(x, p.first, p.count);
-    t.vertices = p.count * pi * p.sigma * p.sigma / 4;
-    for (int i = 0; i < p.count; ++i) {
-        const Eigen::Vector2d prev = vertex_position(x, p.first + wrap(i - 1, p.count));
-        const Eigen::Vector2d here = vertex_position(x, p.first + i);
-        const Eigen::Vector2d next = vertex_position(x, p.first + wrap(i + 1, p.count));
-        const Eigen::Vector2d in = here - prev, out = next - here;
-        const double theta = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)); // turning angle
-        t.sector += p.sigma * p.sigma * (pi - theta) / 8;
-        t.pair += vertex_overlap_segment(out.norm(), p.sigma, p.sigma); // I_{mu i, mu(i+1)}
-        // Interparticle overlaps attributed to vertex mu i (minimum image).
-        for (std::size_t b = 0; b < system.particles.size(); ++b) {
-            if (b == m) continue;
-            const Particle& q = system.particles[b];
-            for (int j = q.first; j < q.first + q.count; ++j)
-                t.pair += vertex_overlap_segment(system.image(vertex_position(x, j) - here).norm(), p.sigma,
-                                                 q.sigma);
+    std::vector<PackingAreas> terms(system.particles.size());
+    for (std::size_t m = 0; m < system.particles.size(); ++m) {
+        const Particle& p = system.particles[m];
+        PackingAreas& t = terms[m];
+        t.polygon = particle_area(x, p.first, p.count);
+        t.vertices = p.count * pi * p.sigma * p.sigma / 4;
+        for (int i = 0; i < p.count; ++i) {
+            const Eigen::Vector2d prev = vertex_position(x, p.first + wrap(i - 1, p.count));
+            const Eigen::Vector2d here = vertex_position(x, p.first + i);
+            const Eigen::Vector2d next = vertex_position(x, p.first + wrap(i + 1, p.count));
+            const Eigen::Vector2d in = here - prev, out = next - here;
+            const double theta =
+                std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)); // turning angle
+            t.sector += p.sigma * p.sigma * (pi - theta) / 8;
+            t.pair += vertex_overlap_segment(out.norm(), p.sigma, p.sigma); // I_{mu i, mu(i+1)}
         }
     }
-    t.phi = t.polygon + t.vertices - t.sector - t.pair; // A_mu, eq. (9.21)
-    return t;
+    // Interparticle overlaps, each segment attributed to its own vertex (minimum image).
+    for (const VertexContact& c : vertex_contacts(system, x)) {
+        const double sigma_a = system.particles[c.a].sigma, sigma_b = system.particles[c.b].sigma;
+        const double r = c.r.norm();
+        terms[c.a].pair += vertex_overlap_segment(r, sigma_a, sigma_b);
+        terms[c.b].pair += vertex_overlap_segment(r, sigma_b, sigma_a);
+    }
+    for (PackingAreas& t : terms)
+        t.phi = t.polygon + t.vertices - t.sector - t.pair; // A_mu, eq. (9.21)
+    return terms;
 }
 
 std::vector<double> particle_areas(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     std::vector<double> areas;
-    for (std::size_t m = 0; m < system.particles.size(); ++m)
-        areas.push_back(particle_area_terms(system, x, m).phi);
+    for (const PackingAreas& t : particle_area_terms(system, x))
+        areas.push_back(t.phi);
     return areas;
 }
 
 PackingAreas packing_areas_analytic(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     PackingAreas a;
-    for (std::size_t m = 0; m < system.particles.size(); ++m) {
-        const PackingAreas t = particle_area_terms(system, x, m);
+    for (const PackingAreas& t : particle_area_terms(system, x)) {
         a.polygon += t.polygon;
         a.vertices += t.vertices;
         a.sector += t.sector;

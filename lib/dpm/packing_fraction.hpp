@@ -35,8 +35,8 @@ struct PackingAreasEstimate
     PackingAreas value, error;
 };
 
-// The terms of eq. (9.21) for particle m (areas in L^2, not divided by the box; phi holds A_mu itself).
-PackingAreas particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x, std::size_t m);
+// The terms of eq. (9.21) for every particle (areas in L^2, not divided by the box; phi holds A_mu itself).
+std::vector<PackingAreas> particle_area_terms(const DpmSystem& system, const Eigen::VectorXd& x);
 // A_mu of every particle, eq. (9.21).
 std::vector<double> particle_areas(const DpmSystem& system, const Eigen::VectorXd& x);
 

@@ -11,18 +11,15 @@ namespace softgrain::dpm {
 
 ContactNetwork disk_contacts(const DpmSystem& system, const Eigen::VectorXd& x, double min_overlap)
 {
-    const int n = static_cast<int>(system.particles.size());
     for (const Particle& p : system.particles)
         if (p.count != 1)
             throw InputError("disk_contacts: a particle has " + std::to_string(p.count) +
                              " vertices; only disks (one vertex) are allowed");
-    ContactNetwork contacts;
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j) {
-            const double sigma = 0.5 * (system.particles[i].sigma + system.particles[j].sigma);
-            const double r = system.image(x.segment<2>(2 * j) - x.segment<2>(2 * i)).norm();
-            if (sigma - r > min_overlap) contacts.insert({i, j});
-        }
+    if (!(min_overlap >= 0))
+        throw InputError("disk_contacts: min_overlap = " + std::to_string(min_overlap) + "; allowed >= 0");
+    ContactNetwork contacts; // disks: vertex i is particle i
+    for (const VertexContact& c : vertex_contacts(system, x))
+        if (c.sigma - c.r.norm() > min_overlap) contacts.insert({c.i, c.j});
     return contacts;
 }
 

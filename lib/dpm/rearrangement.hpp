@@ -24,7 +24,7 @@ using ContactPair = std::pair<int, int>; // particle indices i < j
 using ContactNetwork = std::set<ContactPair>;
 
 // Contacts of a packing of one-vertex particles (disks): pairs with sigma_ij - r_ij > min_overlap, minimum
-// image in the system's box. Throws InputError if a particle has more than one vertex.
+// image in the system's box (min_overlap >= 0). Throws InputError if a particle has more than one vertex.
 ContactNetwork disk_contacts(const DpmSystem& system, const Eigen::VectorXd& x, double min_overlap);
 
 struct NetworkChange

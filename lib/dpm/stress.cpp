@@ -43,32 +43,28 @@ std::vector<Eigen::Matrix2d> particle_stresses(const DpmSystem& system, const Ei
     if (!system.box || system.interaction != InteractionKind::rough)
         throw InputError("per-particle stress (eq. 9.27): needs a periodic box and rough interactions");
     const std::vector<double> areas = particle_areas(system, x);
-    std::vector<Eigen::Matrix2d> stresses;
+    std::vector<Eigen::Matrix2d> moments;
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
-    for (std::size_t m = 0; m < system.particles.size(); ++m) {
-        const Particle& p = system.particles[m];
-        Eigen::Matrix2d moment = shape_moment(p, x, g);
-        for (std::size_t b = 0; b < system.particles.size(); ++b) {
-            if (b == m) continue;
-            const Particle& q = system.particles[b];
-            const double sigma = 0.5 * (p.sigma + q.sigma);
-            const VertexSpringEnergy spring{system.kc, sigma};
-            for (int i = p.first; i < p.first + p.count; ++i)
-                for (int j = q.first; j < q.first + q.count; ++j) {
-                    const Eigen::Vector2d ri = x.segment<2>(2 * i);
-                    const Eigen::Vector2d rij = system.image(x.segment<2>(2 * j) - ri);
-                    const double r = rij.norm();
-                    if (r >= sigma) continue;
-                    Eigen::Vector4d local;
-                    local << ri, ri + rij;
-                    const Eigen::Vector2d force_on_i = -local_gradient<4>(spring, local).gradient.head<2>();
-                    // h: distance from vertex mu i to the contact (radical) line, eq. (9.20)'s d_mu.
-                    const double h = (r * r - 0.25 * q.sigma * q.sigma + 0.25 * p.sigma * p.sigma) / (2 * r);
-                    moment -= (h / r) * rij * force_on_i.transpose();
-                }
-        }
-        stresses.push_back(moment / areas[m]);
+    for (const Particle& p : system.particles)
+        moments.push_back(shape_moment(p, x, g));
+    for (const VertexContact& c : vertex_contacts(system, x)) {
+        const double sigma_a = system.particles[c.a].sigma, sigma_b = system.particles[c.b].sigma;
+        Eigen::Vector4d local;
+        local << Eigen::Vector2d::Zero(), c.r;
+        const Eigen::Vector2d force_on_i =
+            -local_gradient<4>(VertexSpringEnergy{system.kc, c.sigma}, local).gradient.head<2>();
+        const double r = c.r.norm();
+        // h: distance from the vertex to the contact (radical) line, eq. (9.20)'s d_mu, seen from either side;
+        // r_ji F_j^T = r_ij F_i^T (both reversed).
+        const double h_i = (r * r - 0.25 * sigma_b * sigma_b + 0.25 * sigma_a * sigma_a) / (2 * r);
+        const double h_j = (r * r - 0.25 * sigma_a * sigma_a + 0.25 * sigma_b * sigma_b) / (2 * r);
+        const Eigen::Matrix2d moment = c.r * force_on_i.transpose() / r;
+        moments[c.a] -= h_i * moment;
+        moments[c.b] -= h_j * moment;
     }
+    std::vector<Eigen::Matrix2d> stresses;
+    for (std::size_t m = 0; m < moments.size(); ++m)
+        stresses.push_back(moments[m] / areas[m]);
     return stresses;
 }
 

@@ -7,7 +7,9 @@
 // (the dynamical matrix of eq. 9.28 for unit masses) are all assembled from the same local terms.
 #pragma once
 
+#include "core/neighbour_list.hpp"
 #include "core/resources.hpp"
+#include "dpm/contact_list.hpp"
 #include "dpm/shape_energy.hpp"
 
 #include <cmath>
@@ -51,11 +53,9 @@ struct DpmSystem
     // Lees-Edwards shear strain gamma of the box (section 9.4.3): the image above is shifted by gamma L_y in
     // x.
     double lees_edwards_strain = 0;
-    // Candidate particle pairs of the interaction from a cell list over the particle centres (O(N), cells of
-    // the largest pair reach) instead of all N(N-1)/2 pairs. Both visit the same pairs in the same order, so
-    // energies, forces and Hessians are bit-identical. Not used under Lees-Edwards strain (the cell list's
-    // images are those of the plain periodic box): all pairs are visited then.
-    bool cell_list = false;
+    // The vertex-level Verlet list of the interaction (contact_list.hpp): a cache kept between evaluations,
+    // which every contact loop (energies, forces, Hessians, stress, contact counts) traverses.
+    ContactCache contacts;
 
     int vertex_count() const
     {
@@ -89,21 +89,6 @@ inline Eigen::Vector2d minimum_image(const Eigen::Vector2d& d, const Eigen::Vect
 inline Eigen::Vector2d wrap_into_box(const Eigen::Vector2d& p, const Eigen::Vector2d& L)
 {
     return p - (L.array() * (p.array() / L.array()).floor()).matrix();
-}
-
-// Minimum image under Lees-Edwards boundaries with shear strain gamma (x sheared along y), in 2D or 3D: the
-// row of images n_y boxes up is shifted by n_y gamma L_y in x. First the y image, then the others:
-// d - n_y (gamma L_y, L_y, 0) - n_x (L_x, 0, 0) - n_z (0, 0, L_z).
-template <int Dim>
-Eigen::Matrix<double, Dim, 1> lees_edwards_image(Eigen::Matrix<double, Dim, 1> d,
-                                                 const Eigen::Matrix<double, Dim, 1>& L, double gamma)
-{
-    const double ny = std::round(d.y() / L.y());
-    d.x() -= ny * (gamma * L.y());
-    d.y() -= ny * L.y();
-    for (int a = 0; a < Dim; ++a)
-        if (a != 1) d(a) -= L(a) * std::round(d(a) / L(a));
-    return d;
 }
 
 // Simple shear step of section 9.4.3: x_i += dgamma y_i for every vertex, and the Lees-Edwards strain grows

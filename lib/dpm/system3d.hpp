@@ -42,7 +42,7 @@ struct DpmSystem3d
     double kc = 1.0;           // contact stiffness k_c [E/L^2]; 0 switches the interaction off
     std::optional<double> box; // side L of the periodic cubic box (corner at the origin); absent: open space
     // Lees-Edwards shear strain gamma of the box (sec. 9.4.3, x sheared along y): the images one box up in y
-    // are shifted by gamma L in x (lees_edwards_image, system.hpp). 0: the plain periodic cube.
+    // are shifted by gamma L in x (lees_edwards_image, core/neighbour_list.hpp). 0: the plain periodic cube.
     double lees_edwards_strain = 0;
     // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
     InteractionKind interaction = InteractionKind::rough;

@@ -5,6 +5,7 @@
 #include "dpm/shape_energy3d.hpp"
 
 #include <cmath>
+#include <set>
 
 namespace softgrain::dpm {
 
@@ -58,37 +59,42 @@ vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x)
             c += x.segment<2>(2 * v) / p.count;
         return c;
     };
+    // Candidate particle pairs (m < b) from the contact list: every touching pair has a listed vertex pair.
+    std::set<std::pair<int, int>> candidates;
+    if (!system.particles.empty()) {
+        const std::shared_ptr<const ContactList> list = system.contacts.list(system, x);
+        for (const VertexPair& p : list->pairs())
+            candidates.insert({list->particle_of(p.i), list->particle_of(p.neighbour.j)});
+    }
     // The pair alone: a system of the two particles (b shifted to its nearest image of m), same interaction.
     DpmSystem pair;
     pair.interaction = system.interaction;
     pair.kc = system.kc;
-    for (std::size_t m = 0; m < system.particles.size(); ++m)
-        for (std::size_t b = m + 1; b < system.particles.size(); ++b) {
-            const Particle &pm = system.particles[m], &pb = system.particles[b];
-            const Eigen::Vector2d cm = centre(pm), d = system.image(centre(pb) - cm),
-                                  shift = cm + d - centre(pb);
-            pair.particles = {pm, pb};
-            pair.particles[0].first = 0;
-            pair.particles[1].first = pm.count;
-            Eigen::VectorXd local(2 * (pm.count + pb.count));
-            local << x.segment(2 * pm.first, 2 * pm.count), x.segment(2 * pb.first, 2 * pb.count);
-            for (int v = pm.count; v < pm.count + pb.count; ++v)
-                local.segment<2>(2 * v) += shift;
-            Eigen::VectorXd gradient = Eigen::VectorXd::Zero(local.size());
-            if (interaction_energy(pair, local, &gradient, nullptr) <= 0) continue; // not touching
-            Eigen::Vector2d f = Eigen::Vector2d::Zero();
-            for (int v = 0; v < pm.count; ++v)
-                f -= gradient.segment<2>(2 * v);
-            const Eigen::Vector2d n = d.normalized();
-            const Eigen::Vector2d wrap =
-                system.box ? Eigen::Vector2d(wrap_into_box(cm, *system.box) - cm) : Eigen::Vector2d::Zero();
-            data.add_line({data.add_point(cm + wrap), data.add_point(cm + d + wrap)});
-            normal_force.push_back(-f.dot(n));
-            tangential_force.push_back((f - f.dot(n) * n).norm());
-            force.insert(force.end(), {f.x(), f.y(), 0.0});
-            first.push_back(static_cast<std::int64_t>(m));
-            second.push_back(static_cast<std::int64_t>(b));
-        }
+    for (const auto& [m, b] : candidates) {
+        const Particle &pm = system.particles[m], &pb = system.particles[b];
+        const Eigen::Vector2d cm = centre(pm), d = system.image(centre(pb) - cm), shift = cm + d - centre(pb);
+        pair.particles = {pm, pb};
+        pair.particles[0].first = 0;
+        pair.particles[1].first = pm.count;
+        Eigen::VectorXd local(2 * (pm.count + pb.count));
+        local << x.segment(2 * pm.first, 2 * pm.count), x.segment(2 * pb.first, 2 * pb.count);
+        for (int v = pm.count; v < pm.count + pb.count; ++v)
+            local.segment<2>(2 * v) += shift;
+        Eigen::VectorXd gradient = Eigen::VectorXd::Zero(local.size());
+        if (interaction_energy(pair, local, &gradient, nullptr) <= 0) continue; // not touching
+        Eigen::Vector2d f = Eigen::Vector2d::Zero();
+        for (int v = 0; v < pm.count; ++v)
+            f -= gradient.segment<2>(2 * v);
+        const Eigen::Vector2d n = d.normalized();
+        const Eigen::Vector2d wrap =
+            system.box ? Eigen::Vector2d(wrap_into_box(cm, *system.box) - cm) : Eigen::Vector2d::Zero();
+        data.add_line({data.add_point(cm + wrap), data.add_point(cm + d + wrap)});
+        normal_force.push_back(-f.dot(n));
+        tangential_force.push_back((f - f.dot(n) * n).norm());
+        force.insert(force.end(), {f.x(), f.y(), 0.0});
+        first.push_back(m);
+        second.push_back(b);
+    }
     data.cell_scalars("normal_force", std::move(normal_force));
     data.cell_scalars("tangential_force", std::move(tangential_force));
     data.cell_vectors("force", std::move(force));
