@@ -7,10 +7,11 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Index of vertex i (mod n) of the particle starting at `first`.
+// Index of vertex i (mod n), -n <= i < 2n, of the particle starting at `first` (a comparison, not an
+// integer division: these indices are taken at every vertex of every force evaluation).
 int vertex(int first, int n, int i)
 {
-    return first + ((i % n) + n) % n;
+    return first + (i < 0 ? i + n : (i >= n ? i - n : i));
 }
 
 // The edge from vertex i to vertex i + 1, the corner (i - 1, i, i + 1) at vertex i.

@@ -73,13 +73,13 @@ void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
 TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm.jam's protocol [issue 19]")
 {
     const auto [summary, p] = run_bench({{"model", "shell"},
-                                         {"particles", "4"},
+                                         {"particles", "6"},
                                          {"nodes_small", "6"},
                                          {"nodes_large", "8"},
                                          {"pressure_onset", "1e-5"},
                                          {"pressures", "1"},
                                          {"pressure_max", "2e-5"}});
-    check_cost_keys(summary, 2, 4 * (6 + 8) / 2);
+    check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
     const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
     CHECK(summary["force_evaluations"].get<long>() == direct.force_evaluations);
