@@ -34,6 +34,8 @@ struct FireResult
 {
     bool converged = false;
     long iterations = 0;
+    long force_evaluations = 0; // calls of energy_and_force: the start and one per iteration
+    double seconds = 0;         // wall time of the relaxation (a cost, never asserted)
     double energy = 0;
     double force_rms = 0;
     double kinetic = 0; // kinetic energy per degree of freedom at the end

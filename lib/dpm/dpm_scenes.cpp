@@ -1,6 +1,7 @@
 // Registration of the dpm.* scenes; each scene lives in its own file.
 #include "dpm/dpm_scenes.hpp"
 
+#include "dpm/bench_scene.hpp"
 #include "dpm/boundary_jam_scene.hpp"
 #include "dpm/box_compress_scene.hpp"
 #include "dpm/compress3d_scene.hpp"
@@ -117,6 +118,12 @@ void register_dpm_scenes(SceneRegistry& registry)
               dpm::jam_scene_parameters(), dpm::run_jam}
             .needing(bidisperse_memory)
             .with_vtk());
+    registry.add(Scene{"dpm.bench",
+                       "Issue 19: the cost of jamming one packing with the dpm.jam protocol (2D) or the 3D "
+                       "protocol, and of its dense spectrum: time, FIRE iterations, force evaluations per "
+                       "second (make bench)",
+                       dpm::bench_parameters(), dpm::run_bench}
+                     .needing(dpm::bench_memory));
     registry.add(Scene{"dpm.rearrangement",
                        "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",

@@ -106,6 +106,8 @@ JamResult jam(const JamOptions& o)
     const auto relax = [&](long step_index) {
         const FireResult r = rough_disks ? relax_rigid_fire(s, out.x, fire) : relax_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
+        out.force_evaluations += r.force_evaluations;
+        out.relax_seconds += r.seconds;
         if (!r.converged)
             throw NumericalError("relaxation during compression (" + fire_shortfall(r, fire) + ")",
                                  step_index,

@@ -51,7 +51,9 @@ struct JamResult
     Eigen::VectorXd x;
     double pressure_unit = 1; // k_c (disks) or k_a a0
     long fire_iterations = 0;
-    FireOptions fire; // the protocol's FIRE settings, for further steps from its states
+    long force_evaluations = 0; // energy and gradient evaluations of all relaxations
+    double relax_seconds = 0;   // wall time of all relaxations (FIRE)
+    FireOptions fire;           // the protocol's FIRE settings, for further steps from its states
 };
 
 JamResult jam(const JamOptions& options);

@@ -129,6 +129,8 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     const auto relax = [&](long step_index) {
         const FireResult r = relax_fire3d(s, out.x, fire);
         out.fire_iterations += r.iterations;
+        out.force_evaluations += r.force_evaluations;
+        out.relax_seconds += r.seconds;
         if (!r.converged)
             throw NumericalError("relaxation during 3D compression (" + fire_shortfall(r, fire) + ")",
                                  step_index,

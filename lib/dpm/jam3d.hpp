@@ -68,6 +68,8 @@ struct Jam3dResult
     double phi = 0;                 // packing_fraction3d
     double pressure = 0;            // P [k_v v0]
     long fire_iterations = 0;
+    long force_evaluations = 0; // energy and gradient evaluations of all relaxations
+    double relax_seconds = 0;   // wall time of all relaxations (FIRE)
     long box_steps = 0;
     int saddle_escapes = 0; // moves off a saddle, over all targets
     long window_jumps = 0;  // overshoots of a target window kept and decompressed (Jam3dOptions::jump_step)

@@ -8,8 +8,9 @@
 //   AutoDiffScalar<Matrix<double, N, 1>>       -> value and gradient (N = K Dim),
 //   AutoDiffScalar<Matrix<that, N, 1>>         -> value, gradient and Hessian.
 // Every DPM energy (2D shape terms, rough and smooth contacts; 3D faces and dihedrals later) is such a
-// term, so no Hessian is written by hand (the 3D shape terms add analytic gradients for FIRE, checked
-// against these: shape_energy3d.hpp). The sizes are fixed at compile time: no allocation.
+// term, so no Hessian is written by hand (the 2D and 3D shape terms add analytic gradients for FIRE,
+// checked against these: shape_energy.hpp, shape_energy3d.hpp). The sizes are fixed at compile time: no
+// allocation.
 //
 // Rule for writing a term (Eigen's AutoDiff builds expression templates that may refer to temporaries):
 // declare the return type as the Scalar and every intermediate as a Scalar, never `auto`. The functions

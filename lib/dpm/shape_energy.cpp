@@ -7,55 +7,104 @@ namespace softgrain::dpm {
 
 namespace {
 
-// Index of vertex i (mod n) of the particle starting at `first`.
+// Index of vertex i (mod n), -n <= i < 2n, of the particle starting at `first` (a comparison, not an
+// integer division: these indices are taken at every vertex of every force evaluation).
 int vertex(int first, int n, int i)
 {
-    return first + ((i % n) + n) % n;
+    return first + (i < 0 ? i + n : (i >= n ? i - n : i));
 }
 
-// k_a/2 (a - a0)^2 with a = sum of the shoelace terms of the edges: gradient k_a (a - a0) grad a, Hessian
-// k_a (grad a grad a^T + (a - a0) hess a); grad a and hess a are assembled from the local shoelace terms over
-// the particle's own 2n coordinates (the rank-one term couples every pair of them, and only them).
-double area_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
-                   Eigen::VectorXd* gradient, HessianSink hessian)
+// The edge from vertex i to vertex i + 1, the corner (i - 1, i, i + 1) at vertex i.
+std::array<int, 2> edge_points(int first, int n, int i)
 {
-    const Eigen::VectorXd own_x = x.segment(2 * first, 2 * n);
-    Eigen::VectorXd grad_a = Eigen::VectorXd::Zero(gradient || hessian ? 2 * n : 0);
-    Eigen::MatrixXd hess_a = Eigen::MatrixXd::Zero(hessian ? 2 * n : 0, hessian ? 2 * n : 0);
-    const auto term = [](const auto& local) { return shoelace_term(local); };
-    double area = 0;
-    for (int i = 0; i < n; ++i) {
-        const std::array<int, 2> points{vertex(0, n, i), vertex(0, n, i + 1)};
-        area += add_local_term<2, 2>(term, points, gather<2, 2>(own_x, points),
-                                     gradient || hessian ? &grad_a : nullptr, hessian ? &hess_a : nullptr);
-    }
-    const double deviation = area - shape.a0;
-    if (gradient) gradient->segment(2 * first, 2 * n) += shape.ka * deviation * grad_a;
-    if (hessian)
-        hessian.add(2 * first, 2 * first, shape.ka * (grad_a * grad_a.transpose() + deviation * hess_a));
-    return harmonic_penalty(shape.ka, area, shape.a0);
+    return {vertex(first, n, i), vertex(first, n, i + 1)};
+}
+
+std::array<int, 3> corner_points(int first, int n, int i)
+{
+    return {vertex(first, n, i - 1), vertex(first, n, i), vertex(first, n, i + 1)};
+}
+
+// Eq. (9.1) with its gradient through the analytic local gradients (decision dpm-2d-analytic-gradient): the
+// same terms as the AutoDiff path below; the edge length is computed once per edge for both k_l and gamma,
+// d U/d l = k_l (l - l0) + gamma.
+double shape_energy_with_gradient(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
+                                  Eigen::VectorXd& gradient, unsigned terms)
+{
+    const auto edge = [first, n](int i) { return edge_points(first, n, i); };
+    double energy = 0;
+    if ((terms & area_term) && shape.ka != 0)
+        energy += penalty_of_sum_with_gradient<2, 2>(shape.ka, shape.a0, shoelace_term,
+                                                     shoelace_term_gradient, n, edge, x, gradient);
+    const double kl = (terms & edge_term) ? shape.kl : 0;
+    const double gamma = (terms & line_tension_term) ? shape.gamma : 0;
+    if (kl != 0 || gamma != 0)
+        for (int i = 0; i < n; ++i) {
+            const auto points = edge(i);
+            energy += add_penalty_and_tension<2, 2>(edge_length_gradient(gather<2, 2>(x, points)), points, kl,
+                                                    shape.l0, gamma, gradient);
+        }
+    if ((terms & bending_term) && shape.kb != 0)
+        for (int i = 0; i < n; ++i) {
+            const auto points = corner_points(first, n, i);
+            energy += add_penalty_and_tension<2, 3>(turning_angle_gradient(gather<2, 3>(x, points)), points,
+                                                    shape.kb, shape.theta0, 0.0, gradient);
+        }
+    return energy;
 }
 
 } // namespace
 
+LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    const Eigen::Vector2d r = x.segment<2>(2) - x.segment<2>(0);
+    LocalGradient<4> d;
+    d.value = edge_length(x);
+    const Eigen::Vector2d unit = r / d.value;
+    d.gradient << -unit, unit;
+    return d;
+}
+
+LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    LocalGradient<4> d;
+    d.value = shoelace_term(x);
+    d.gradient << 0.5 * x(3), -0.5 * x(2), -0.5 * x(1), 0.5 * x(0);
+    return d;
+}
+
+LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x)
+{
+    const Eigen::Vector2d incoming = x.segment<2>(2) - x.segment<2>(0);
+    const Eigen::Vector2d outgoing = x.segment<2>(4) - x.segment<2>(2);
+    // d phi/d e = (-e_y, e_x)/|e|^2 for the polar angle phi of an edge e.
+    const Eigen::Vector2d g0 = Eigen::Vector2d(-incoming.y(), incoming.x()) / incoming.squaredNorm();
+    const Eigen::Vector2d g2 = Eigen::Vector2d(-outgoing.y(), outgoing.x()) / outgoing.squaredNorm();
+    LocalGradient<6> d;
+    d.value = turning_angle(x);
+    d.gradient << g0, -(g0 + g2), g2;
+    return d;
+}
+
 double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
                     Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {
+    if (gradient && !hessian) return shape_energy_with_gradient(shape, x, first, n, *gradient, terms);
     double energy = 0;
-    if ((terms & area_term) && shape.ka != 0) energy += area_energy(shape, x, first, n, gradient, hessian);
-    const EdgeLengthEnergy edge{shape.kl, shape.l0};
-    const LineTensionEnergy tension{shape.gamma};
-    const BendingEnergy bending{shape.kb, shape.theta0};
+    if ((terms & area_term) && shape.ka != 0)
+        energy += penalty_of_sum<2, 2>(
+            shape.ka, shape.a0, shoelace_term, n, [first, n](int i) { return edge_points(first, n, i); },
+            first, n, x, gradient, hessian);
+    const LocalPenalty edge{edge_length, shape.kl, shape.l0};
+    const LocalTension tension{edge_length, shape.gamma};
+    const LocalPenalty bending{turning_angle, shape.kb, shape.theta0};
     for (int i = 0; i < n; ++i) {
-        const std::array<int, 2> edge_points{vertex(first, n, i - 1), vertex(first, n, i)};
+        const std::array<int, 2> points = edge_points(first, n, i - 1);
         if ((terms & edge_term) && shape.kl != 0)
-            energy +=
-                add_local_term<2, 2>(edge, edge_points, gather<2, 2>(x, edge_points), gradient, hessian);
+            energy += add_local_term<2, 2>(edge, points, gather<2, 2>(x, points), gradient, hessian);
         if ((terms & line_tension_term) && shape.gamma != 0)
-            energy +=
-                add_local_term<2, 2>(tension, edge_points, gather<2, 2>(x, edge_points), gradient, hessian);
-        const std::array<int, 3> corner{vertex(first, n, i - 1), vertex(first, n, i),
-                                        vertex(first, n, i + 1)};
+            energy += add_local_term<2, 2>(tension, points, gather<2, 2>(x, points), gradient, hessian);
+        const std::array<int, 3> corner = corner_points(first, n, i);
         if ((terms & bending_term) && shape.kb != 0)
             energy += add_local_term<2, 3>(bending, corner, gather<2, 3>(x, corner), gradient, hessian);
     }

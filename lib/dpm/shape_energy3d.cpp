@@ -14,72 +14,31 @@ std::array<int, 4> edge_points(const MeshEdge& e, int first)
     return {first + e.a, first + e.b, first + e.c, first + e.d};
 }
 
-// k_v/2 (v - v0)^2 with v = sum of the face volumes: gradient k_v (v - v0) grad v, Hessian
-// k_v (grad v grad v^T + (v - v0) hess v); grad v and hess v are assembled from the local face volumes over
-// the particle's own coordinates (the rank-one term couples every pair of them, and only them).
-double volume_energy(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
-                     int first, Eigen::VectorXd* gradient, HessianSink hessian)
-{
-    const int dofs = 3 * mesh.vertex_count();
-    const Eigen::VectorXd own_x = x.segment(3 * first, dofs);
-    Eigen::VectorXd grad_v = Eigen::VectorXd::Zero(gradient || hessian ? dofs : 0);
-    Eigen::MatrixXd hess_v = Eigen::MatrixXd::Zero(hessian ? dofs : 0, hessian ? dofs : 0);
-    const auto term = [](const auto& local) { return face_volume(local); };
-    double volume = 0;
-    for (const auto& f : mesh.faces) {
-        const auto points = face_points(f, 0);
-        volume += add_local_term<3, 3>(term, points, gather<3, 3>(own_x, points),
-                                       gradient || hessian ? &grad_v : nullptr, hessian ? &hess_v : nullptr);
-    }
-    const double deviation = volume - shape.v0;
-    if (gradient) gradient->segment(3 * first, dofs) += shape.kv * deviation * grad_v;
-    if (hessian)
-        hessian.add(3 * first, 3 * first, shape.kv * (grad_v * grad_v.transpose() + deviation * hess_v));
-    return harmonic_penalty(shape.kv, volume, shape.v0);
-}
-
 // Eq. (9.2) with its gradient through the analytic local gradients (decision dpm-3d-analytic-gradient):
-// the same terms in the same order as the AutoDiff path below; the face area is computed once per face for
-// both k_a and gamma, d U/d x = (k_a (a_f - a_f0) + gamma) d a_f/d x.
+// the same terms as the AutoDiff path below; the face area is computed once per face for both k_a and
+// gamma, d U/d x = (k_a (a_f - a_f0) + gamma) d a_f/d x.
 double shape_energy_with_gradient3d(const ShapeParameters3d& shape, const TriangleMesh& mesh,
                                     const Eigen::VectorXd& x, int first, Eigen::VectorXd& gradient,
                                     unsigned terms)
 {
     double energy = 0;
-    if ((terms & volume_term3d) && shape.kv != 0) {
-        Eigen::VectorXd grad_v = Eigen::VectorXd::Zero(3 * mesh.vertex_count()); // this particle's dofs
-        double volume = 0;
-        for (const auto& f : mesh.faces) {
-            const LocalGradient<9> d = face_volume_gradient(gather<3, 3>(x, face_points(f, first)));
-            volume += d.value;
-            scatter_gradient<3, 3>(d.gradient, face_points(f, 0), 1.0, grad_v);
-        }
-        gradient.segment(3 * first, grad_v.size()) += shape.kv * (volume - shape.v0) * grad_v;
-        energy += harmonic_penalty(shape.kv, volume, shape.v0);
-    }
-    const bool areas = (terms & face_area_term3d) && shape.ka != 0;
-    const bool tension = (terms & surface_tension_term3d) && shape.gamma != 0;
-    if (areas || tension)
+    if ((terms & volume_term3d) && shape.kv != 0)
+        energy += penalty_of_sum_with_gradient<3, 3>(
+            shape.kv, shape.v0, face_volume, face_volume_gradient, mesh.face_count(),
+            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, x, gradient);
+    const double ka = (terms & face_area_term3d) ? shape.ka : 0;
+    const double gamma = (terms & surface_tension_term3d) ? shape.gamma : 0;
+    if (ka != 0 || gamma != 0)
         for (int f = 0; f < mesh.face_count(); ++f) {
             const auto points = face_points(mesh.faces[f], first);
-            const LocalGradient<9> d = triangle_area_gradient(gather<3, 3>(x, points));
-            double slope = 0; // d U/d a_f
-            if (areas) {
-                energy += harmonic_penalty(shape.ka, d.value, shape.a0[f]);
-                slope += shape.ka * (d.value - shape.a0[f]);
-            }
-            if (tension) {
-                energy += shape.gamma * d.value;
-                slope += shape.gamma;
-            }
-            scatter_gradient<3, 3>(d.gradient, points, slope, gradient);
+            energy += add_penalty_and_tension<3, 3>(triangle_area_gradient(gather<3, 3>(x, points)), points,
+                                                    ka, ka != 0 ? shape.a0[f] : 0.0, gamma, gradient);
         }
     if ((terms & bending_term3d) && shape.kb != 0)
         for (int e = 0; e < mesh.edge_count(); ++e) {
             const auto points = edge_points(mesh.edges[e], first);
-            const LocalGradient<12> d = dihedral_angle_gradient(gather<3, 4>(x, points));
-            energy += harmonic_penalty(shape.kb, d.value, shape.theta0[e]);
-            scatter_gradient<3, 4>(d.gradient, points, shape.kb * (d.value - shape.theta0[e]), gradient);
+            energy += add_penalty_and_tension<3, 4>(dihedral_angle_gradient(gather<3, 4>(x, points)), points,
+                                                    shape.kb, shape.theta0[e], 0.0, gradient);
         }
     return energy;
 }
@@ -126,12 +85,15 @@ double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, 
     if (gradient && !hessian) return shape_energy_with_gradient3d(shape, mesh, x, first, *gradient, terms);
     double energy = 0;
     if ((terms & volume_term3d) && shape.kv != 0)
-        energy += volume_energy(shape, mesh, x, first, gradient, hessian);
-    const SurfaceTensionEnergy tension{shape.gamma};
+        energy += penalty_of_sum<3, 3>(
+            shape.kv, shape.v0, face_volume, mesh.face_count(),
+            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, first, mesh.vertex_count(),
+            x, gradient, hessian);
+    const LocalTension tension{triangle_area, shape.gamma};
     for (int f = 0; f < mesh.face_count(); ++f) {
         const auto points = face_points(mesh.faces[f], first);
         if ((terms & face_area_term3d) && shape.ka != 0)
-            energy += add_local_term<3, 3>(FaceAreaEnergy{shape.ka, shape.a0[f]}, points,
+            energy += add_local_term<3, 3>(LocalPenalty{triangle_area, shape.ka, shape.a0[f]}, points,
                                            gather<3, 3>(x, points), gradient, hessian);
         if ((terms & surface_tension_term3d) && shape.gamma != 0)
             energy += add_local_term<3, 3>(tension, points, gather<3, 3>(x, points), gradient, hessian);
@@ -139,7 +101,7 @@ double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, 
     if ((terms & bending_term3d) && shape.kb != 0)
         for (int e = 0; e < mesh.edge_count(); ++e) {
             const auto points = edge_points(mesh.edges[e], first);
-            energy += add_local_term<3, 4>(DihedralEnergy{shape.kb, shape.theta0[e]}, points,
+            energy += add_local_term<3, 4>(LocalPenalty{dihedral_angle, shape.kb, shape.theta0[e]}, points,
                                            gather<3, 4>(x, points), gradient, hessian);
         }
     return energy;

@@ -29,33 +29,29 @@
 
 namespace softgrain::dpm {
 
+// The local measures of eq. (9.2), named generic callables as those of eq. (9.1) (shape_energy.hpp).
+
 // Signed volume r0 . (r1 x r2)/6 of the tetrahedron (origin, r0, r1, r2), x = (r0, r1, r2).
-template <class Scalar>
-Scalar face_volume(const Eigen::Matrix<Scalar, 9, 1>& x)
-{
+inline constexpr auto face_volume = []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Scalar {
     const Eigen::Matrix<Scalar, 3, 1> r0 = x.template segment<3>(0), r1 = x.template segment<3>(3),
                                       r2 = x.template segment<3>(6);
     const Eigen::Matrix<Scalar, 3, 1> c = r1.cross(r2);
     return Scalar(r0.dot(c) / 6.0);
-}
+};
 
 // Area |(r1 - r0) x (r2 - r0)|/2 of the triangle x = (r0, r1, r2).
-template <class Scalar>
-Scalar triangle_area(const Eigen::Matrix<Scalar, 9, 1>& x)
-{
+inline constexpr auto triangle_area = []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Scalar {
     using std::sqrt;
     const Eigen::Matrix<Scalar, 3, 1> u = x.template segment<3>(3) - x.template segment<3>(0),
                                       w = x.template segment<3>(6) - x.template segment<3>(0);
     const Eigen::Matrix<Scalar, 3, 1> n = u.cross(w);
     return Scalar(0.5 * sqrt(n.squaredNorm()));
-}
+};
 
 // Bending angle at the edge (a, b) of x = (a, b, c, d) shared by the faces (a, b, c) and (b, a, d):
 // theta = atan2(e . (n1 x n2)/|e|, n1 . n2) with e = b - a and the face normals n1 = (b - a) x (c - a),
 // n2 = (a - b) x (d - b); in (-pi, pi], positive for a convex (outward-bent) edge, smooth through 0.
-template <class Scalar>
-Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
-{
+inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scalar, 12, 1>& x) -> Scalar {
     using std::atan2;
     using std::sqrt;
     const Eigen::Matrix<Scalar, 3, 1> a = x.template segment<3>(0), b = x.template segment<3>(3),
@@ -67,7 +63,7 @@ Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
     const Scalar sine = e.dot(m) / sqrt(e.squaredNorm());
     const Scalar cosine = n1.dot(n2);
     return Scalar(atan2(sine, cosine));
-}
+};
 
 // Analytic first derivatives of the three local measures above, for the gradient-only path (FIRE): the
 // AutoDiff gradient of the same measures costs several times more (decision dpm-3d-analytic-gradient);
@@ -82,12 +78,6 @@ Scalar dihedral_angle(const Eigen::Matrix<Scalar, 12, 1>& x)
 //     normal flattens a convex edge); the edge points carry the rest according to where c and d project on
 //     the edge, with t_c = (c - a) . e/|e|^2: d theta/d b = -(t_c d theta/d c + t_d d theta/d d),
 //     d theta/d a = -(d theta/d b + d theta/d c + d theta/d d); undefined for a degenerate face.
-template <int N>
-struct LocalGradient
-{
-    double value = 0;
-    Eigen::Matrix<double, N, 1> gradient;
-};
 LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x);
 LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x);
 LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x);
@@ -111,39 +101,6 @@ enum ShapeTerm3d : unsigned {
     bending_term3d = 4u,
     surface_tension_term3d = 8u,
     all_shape_terms3d = 15u
-};
-
-// Face-area penalty k_a/2 (a - a0)^2 of one face (3 points).
-struct FaceAreaEnergy
-{
-    double ka, a0;
-    template <class Scalar>
-    Scalar operator()(const Eigen::Matrix<Scalar, 9, 1>& x) const
-    {
-        return harmonic_penalty(ka, triangle_area(x), a0);
-    }
-};
-
-// Bending penalty k_b/2 (theta - theta0)^2 at one edge (4 points).
-struct DihedralEnergy
-{
-    double kb, theta0;
-    template <class Scalar>
-    Scalar operator()(const Eigen::Matrix<Scalar, 12, 1>& x) const
-    {
-        return harmonic_penalty(kb, dihedral_angle(x), theta0);
-    }
-};
-
-// Surface tension gamma a of one face (3 points); summed over the faces it is gamma s.
-struct SurfaceTensionEnergy
-{
-    double gamma;
-    template <class Scalar>
-    Scalar operator()(const Eigen::Matrix<Scalar, 9, 1>& x) const
-    {
-        return Scalar(gamma) * triangle_area(x);
-    }
 };
 
 // Shape energy eq. (9.2) of the particle with the mesh's connectivity whose vertex v is point first + v of

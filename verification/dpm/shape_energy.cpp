@@ -1,11 +1,13 @@
 // DPM eq. (9.1): every term of the 2D shape energy. Forces are minus the gradient of the energy and the
 // Hessian is the derivative of the gradient (central finite differences on random configurations);
-// the shape parameter of section 9.3.1 and its minimum N tan(pi/N)/pi.
+// the analytic gradients of the gradient-only (FIRE) path equal the AutoDiff ones to round-off; the shape
+// parameter of section 9.3.1 and its minimum N tan(pi/N)/pi.
 #include "dpm/shape_energy.hpp"
 #include "core/rng.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
+#include <algorithm>
 #include <numbers>
 
 using namespace softgrain;
@@ -147,4 +149,93 @@ TEST_CASE("Table 9.1 rest shapes: an elastic shell at A0 = A_min is force-free a
     CHECK_CLOSE(shape_energy(s, x, 0, n, &g, nullptr), 0.0, (Tolerance{0, 1e3 * round_off * round_off}));
     CHECK_CLOSE(g.norm(), 0.0, (Tolerance{0, 1e3 * round_off}));
     CHECK_CLOSE(n * s.l0, particle_perimeter(x, 0, n), (Tolerance{1e3 * round_off, 0}));
+}
+
+TEST_CASE("analytic gradients of edge length, shoelace term and turning angle = AutoDiff ones to round-off "
+          "[DPM eq. (9.1)]")
+{
+    // The same derivative in two roundings: the analytic formulas (shape_energy.hpp) and forward AutoDiff of
+    // the measures themselves. Each component is a quotient or product of two or three O(1) differences of
+    // coordinates, so they agree to a few eps of the measure's gradient scale (its largest component); 16
+    // eps leaves room for the different operation order of AutoDiff's atan2 derivative
+    // (d cross dot - cross d dot)/(cross^2 + dot^2), while a wrong sign or term is an O(1) relative error.
+    // The values are the same double code in both. Random points of [-1, 1]^2: turning angles over
+    // (-pi, pi), both signs and close to +-pi.
+    Rng rng(91201);
+    const auto point = [&rng] { return Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1)); };
+    const auto check = [](const auto& analytic, const auto& autodiff) {
+        const double scale = autodiff.gradient.cwiseAbs().maxCoeff();
+        CHECK_CLOSE(analytic.value, autodiff.value, (Tolerance{0, 4 * round_off * std::abs(autodiff.value)}));
+        CHECK_CLOSE((analytic.gradient - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 16 * round_off * scale}));
+    };
+    double smallest_angle = 0, largest_angle = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        Eigen::Matrix<double, 4, 1> edge;
+        edge << point(), point();
+        check(edge_length_gradient(edge), local_gradient<4>(edge_length, edge));
+        check(shoelace_term_gradient(edge), local_gradient<4>(shoelace_term, edge));
+        Eigen::Matrix<double, 6, 1> corner;
+        corner << point(), point(), point();
+        check(turning_angle_gradient(corner), local_gradient<6>(turning_angle, corner));
+        smallest_angle = std::min(smallest_angle, turning_angle(corner));
+        largest_angle = std::max(largest_angle, turning_angle(corner));
+    }
+    CHECK(smallest_angle < -3.0);
+    CHECK(largest_angle > 3.0);
+}
+
+TEST_CASE("the gradient-only path of eq. (9.1) (analytic, FIRE) = the AutoDiff gradient beside the Hessian, "
+          "each term, k_b = 0 and k_b > 0, random polygons [DPM eq. (9.1)]")
+{
+    // Random non-regular polygons (vertices displaced by up to 30 % of the edge: concave corners too) of
+    // 3 ... 22 vertices, stored as the second particle of a flat array (so the particle's offset is
+    // exercised), with random stiffnesses and rest values; floppy-like k_b = 0 and shell-like k_b > 0.
+    // The analytic path sums k (q - q0) grad q element by element, the AutoDiff path per term and, for the
+    // area, grad a first: round-off of the sums over the <= 3 local terms at a vertex and of the product
+    // k_a (a - a0) grad a, where a - a0 carries the rounding of the O(n)-term shoelace sum (n eps |a|);
+    // hence 100 eps of the gradient's scale (its largest component, at least 1 of these O(1) units).
+    // A wrong sign, factor or index is an O(1) relative error.
+    Rng rng(91202);
+    const std::pair<unsigned, const char*> terms[] = {{area_term, "area"},
+                                                      {edge_term, "edge length"},
+                                                      {bending_term, "bending"},
+                                                      {line_tension_term, "line tension"},
+                                                      {all_shape_terms, "all"}};
+    for (int n : {3, 6, 16, 22}) {
+        for (double kb_factor : {0.0, 1.0}) {
+            ShapeParameters s = random_parameters(n, rng);
+            s.kb *= kb_factor;
+            const Eigen::VectorXd before = perturbed_polygon(5, 1.0, 0.1, rng);
+            const Eigen::VectorXd polygon = perturbed_polygon(n, s.a0 * rng.uniform(0.7, 1.3), 0.3, rng);
+            Eigen::VectorXd x(before.size() + polygon.size());
+            x << before, polygon;
+            const int first = 5, dofs = static_cast<int>(x.size());
+            for (const auto& [term, name] : terms) {
+                CAPTURE(n);
+                CAPTURE(s.kb);
+                CAPTURE(name);
+                Eigen::VectorXd g_autodiff = Eigen::VectorXd::Zero(dofs),
+                                g_analytic = Eigen::VectorXd::Zero(dofs);
+                Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
+                const double energy = shape_energy(s, x, first, n, &g_autodiff, &h, term);
+                CHECK_CLOSE(shape_energy(s, x, first, n, &g_analytic, nullptr, term), energy,
+                            (Tolerance{10 * round_off, 100 * round_off}));
+                const double scale = std::max(1.0, g_autodiff.cwiseAbs().maxCoeff());
+                CHECK_CLOSE((g_analytic - g_autodiff).cwiseAbs().maxCoeff(), 0.0,
+                            (Tolerance{0, 100 * round_off * scale}));
+                // Nothing outside the particle.
+                CHECK(g_analytic.head(2 * first).cwiseAbs().maxCoeff() == 0.0);
+                CHECK(h.topRows(2 * first).cwiseAbs().maxCoeff() == 0.0);
+                CHECK(h.leftCols(2 * first).cwiseAbs().maxCoeff() == 0.0);
+                // The same particle alone: the same gradient and Hessian, the offset only moves them (same
+                // operations on the same numbers).
+                Eigen::VectorXd g_alone = Eigen::VectorXd::Zero(2 * n);
+                Eigen::MatrixXd h_alone = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+                shape_energy(s, polygon, 0, n, &g_alone, &h_alone, term);
+                CHECK((g_autodiff.tail(2 * n) - g_alone).cwiseAbs().maxCoeff() == 0.0);
+                CHECK((h.bottomRightCorner(2 * n, 2 * n) - h_alone).cwiseAbs().maxCoeff() == 0.0);
+            }
+        }
+    }
 }

@@ -1,0 +1,164 @@
+// dpm.bench: what it costs to jam one packing and to take its spectrum (issue 19), for `make bench`.
+//
+// dimension = 2: the dpm.jam protocol (jam.hpp) with dpm.jam's parameters. dimension = 3: the 3D protocol
+// (jam3d.hpp) with the same parameters mapped onto it: model, particles, seed, pressure_onset,
+// pressure_max and pressures (in k_v v0), A0_floppy (as A0^3D) as they are; both particle sizes on one mesh
+// whose vertex count nodes_small = nodes_large names it (mesh_for_nodes); rough contacts as in 2D; the rest
+// (stiffnesses, FIRE budget, saddle escapes, size ratio 1.4) at the protocol's defaults; kl_surface has no
+// 3D counterpart. Reported (summary.json): jam_seconds (the whole protocol), relax_seconds (the FIRE
+// relaxations in it), fire_iterations, force_evaluations (energy and gradient evaluations of those
+// relaxations: one per FIRE iteration and one at the start of each), force_evaluations_per_second and
+// vertex_force_evaluations_per_second (over relax_seconds), spectrum_seconds, degrees_of_freedom; the run's
+// peak memory is peak_memory_mib. Costs are measured, never asserted (verification/dpm/bench.cpp checks
+// that the keys agree with each other).
+#include "dpm/bench_scene.hpp"
+
+#include "core/errors.hpp"
+#include "core/output.hpp"
+#include "dpm/jam.hpp"
+#include "dpm/jam3d.hpp"
+#include "dpm/jam_scene.hpp"
+#include "dpm/modes.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <array>
+#include <chrono>
+
+namespace softgrain::dpm {
+
+namespace {
+
+// What a jamming run cost, in either dimension.
+struct JamCost
+{
+    double jam_seconds = 0, relax_seconds = 0, spectrum_seconds = 0;
+    long fire_iterations = 0, force_evaluations = 0;
+    Eigen::Index degrees_of_freedom = 0, vertices = 0, modes = 0;
+};
+
+// The meshes of the 3D protocol by vertex count.
+const std::array<const char*, 6> meshes3d{"tetrahedron", "octahedron",  "icosahedron",
+                                          "geodesic42",  "geodesic162", "geodesic642"};
+
+std::string mesh_for_nodes(const JamOptions& o)
+{
+    std::string allowed;
+    for (const char* name : meshes3d) {
+        const int count = mesh_from_name(name).vertex_count();
+        if (o.nodes_small == count && o.nodes_large == count) return name;
+        allowed += (allowed.empty() ? "" : ", ") + std::to_string(count) + " (" + name + ")";
+    }
+    throw InputError("nodes_small = " + std::to_string(o.nodes_small) +
+                     " and nodes_large = " + std::to_string(o.nodes_large) +
+                     " with dimension = 3: both particle sizes use one mesh; allowed equal vertex counts " +
+                     allowed);
+}
+
+Jam3dOptions jam3d_options(const JamOptions& o)
+{
+    if (o.model == "smooth_disk" || o.model == "rough_disk")
+        throw InputError("model = '" + o.model +
+                         "' with dimension = 3: allowed shell | floppy | surface_tension");
+    Jam3dOptions o3;
+    o3.model = shape_model_from_name(o.model);
+    o3.particles = o.particles;
+    o3.mesh = mesh_for_nodes(o);
+    o3.size_ratio = o.size_ratio;
+    o3.pressure_onset = o.pressure_onset;
+    o3.pressure_max = o.pressure_max;
+    o3.pressures = o.pressures;
+    o3.A0_floppy = o.A0_floppy;
+    o3.seed = o.seed;
+    o3.interaction = InteractionKind::rough;
+    return o3;
+}
+
+// The spectrum of the jammed packing (eq. 9.28) as the scenes take it today: every eigenvalue and
+// eigenvector of the dense dynamical matrix (Eigen's SelfAdjointEigenSolver). Returns the number of modes.
+Eigen::Index packing_spectrum(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    return vibrational_modes(system, x).eigenvalues.size();
+}
+
+Eigen::Index packing_spectrum(const DpmSystem3d& system, const Eigen::VectorXd& x)
+{
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+    total_energy3d(system, x, nullptr, &m);
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m).eigenvalues().size();
+}
+
+// Runs `jam_packing` and the spectrum of the packing it returns (2D: at the last target pressure; 3D: at
+// P_t), timing both.
+template <class Jam>
+JamCost measure(const Jam& jam_packing)
+{
+    JamCost cost;
+    auto start = std::chrono::steady_clock::now();
+    const auto result = jam_packing();
+    cost.jam_seconds = seconds_since(start);
+    cost.relax_seconds = result.relax_seconds;
+    cost.fire_iterations = result.fire_iterations;
+    cost.force_evaluations = result.force_evaluations;
+    cost.degrees_of_freedom = result.x.size();
+    start = std::chrono::steady_clock::now();
+    cost.modes = packing_spectrum(result.system, result.x);
+    cost.spectrum_seconds = seconds_since(start);
+    return cost;
+}
+
+} // namespace
+
+void run_bench(const Parameters& p, RunContext& context)
+{
+    const JamOptions o = jam_options(p);
+    const int dimension = static_cast<int>(p.integer("dimension"));
+    context.record_seed(o.seed);
+    JamCost cost;
+    if (dimension == 2) {
+        cost = measure([&o] { return jam(o); });
+        cost.vertices = cost.degrees_of_freedom / 2;
+    } else {
+        const Jam3dOptions o3 = jam3d_options(o);
+        cost = measure([&o3] { return jam3d(o3); });
+        cost.vertices = cost.degrees_of_freedom / 3;
+    }
+    context.count_steps(cost.fire_iterations);
+    auto& s = context.summary();
+    s["dimension"] = dimension;
+    s["degrees_of_freedom"] = cost.degrees_of_freedom;
+    s["vertices"] = cost.vertices;
+    s["jam_seconds"] = cost.jam_seconds;
+    s["relax_seconds"] = cost.relax_seconds;
+    s["fire_iterations"] = cost.fire_iterations;
+    s["force_evaluations"] = cost.force_evaluations;
+    s["force_evaluations_per_second"] = static_cast<double>(cost.force_evaluations) / cost.relax_seconds;
+    s["vertex_force_evaluations_per_second"] =
+        static_cast<double>(cost.vertices) * static_cast<double>(cost.force_evaluations) / cost.relax_seconds;
+    s["spectrum_seconds"] = cost.spectrum_seconds;
+    s["spectrum_modes"] = cost.modes;
+}
+
+std::vector<ParameterSpec> bench_parameters()
+{
+    std::vector<ParameterSpec> specs = jam_parameters();
+    specs.push_back(ParameterSpec::integer("dimension", 2, "1",
+                                           "2: the dpm.jam protocol; 3: the 3D protocol of dpm.modes3d "
+                                           "(jam3d.hpp), nodes_small = nodes_large = its mesh's vertices "
+                                           "(4, 6, 12, 42, 162, 642), pressures in k_v v0, kl_surface unused")
+                        .at_least(2)
+                        .at_most(3));
+    return specs;
+}
+
+MemoryEstimate bench_memory(const Parameters& p)
+{
+    const double particles = static_cast<double>(p.integer("particles"));
+    const double nodes = 0.5 * static_cast<double>(p.integer("nodes_small") + p.integer("nodes_large"));
+    const double dimension = static_cast<double>(p.integer("dimension"));
+    const bool disks = p.choice("model") == "smooth_disk";
+    return dense_matrix_memory(dimension * particles * (disks ? 1.0 : nodes), 2,
+                               disks ? "dimension x particles"
+                                     : "dimension x particles x (nodes_small + nodes_large) / 2");
+}
+
+} // namespace softgrain::dpm

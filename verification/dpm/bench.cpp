@@ -1,0 +1,107 @@
+// dpm.bench (issue 19): a tiny run of each dimension through the scene API. Its costs are measured, never
+// asserted; what is checked is that its keys agree with each other and with the protocol they time: the
+// rates are the counts over relax_seconds, each relaxation evaluates the forces once more than it iterates,
+// the relaxations lie inside the protocol's time, the spectrum has one mode per degree of freedom, and the
+// FIRE iterations are those of the same protocol run directly (jam(), deterministic for a seed).
+#include "core/errors.hpp"
+#include "core/output.hpp"
+#include "core/scene.hpp"
+#include "dpm/jam.hpp"
+#include "dpm/jam_scene.hpp"
+#include "support/tolerance.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+using namespace softgrain;
+using softgrain::verification::round_off;
+using softgrain::verification::Tolerance;
+
+namespace {
+
+// Runs dpm.bench with `settings` and returns its summary.json and parameters.
+std::pair<nlohmann::json, Parameters>
+run_bench(const std::vector<std::pair<std::string, std::string>>& settings)
+{
+    const SceneRegistry scenes = all_scenes();
+    const Scene& scene = scenes.find("dpm.bench");
+    Parameters p(scene.parameters);
+    for (const auto& [key, value] : settings)
+        p.set_from_text(key, value);
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("softgrain-dpm-bench-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    {
+        RunContext context(dir, scene.name, p, true);
+        scene.run(p, context);
+        context.commit();
+    }
+    const nlohmann::json summary = nlohmann::json::parse(std::ifstream(dir / scene.name / "summary.json"));
+    std::filesystem::remove_all(dir);
+    return {summary, p};
+}
+
+// The relations between the cost keys of a summary (any dimension).
+void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
+{
+    const double evaluations = s["force_evaluations"].get<double>(),
+                 seconds = s["relax_seconds"].get<double>();
+    CHECK(s["dimension"].get<int>() == dimension);
+    CHECK(s["vertices"].get<long>() == vertices);
+    CHECK(s["degrees_of_freedom"].get<long>() == dimension * vertices);
+    CHECK(s["spectrum_modes"].get<long>() == dimension * vertices);
+    // One evaluation per iteration and one at the start of each relaxation (at least one relaxation).
+    CHECK(s["fire_iterations"].get<long>() < s["force_evaluations"].get<long>());
+    CHECK(s["steps"].get<long>() == s["fire_iterations"].get<long>());
+    // The rates are the quotients they are said to be (a division: round-off).
+    CHECK_CLOSE(s["force_evaluations_per_second"].get<double>(), evaluations / seconds,
+                (Tolerance{4 * round_off, 0}));
+    CHECK_CLOSE(s["vertex_force_evaluations_per_second"].get<double>(),
+                static_cast<double>(vertices) * evaluations / seconds, (Tolerance{4 * round_off, 0}));
+    // The relaxations are timed inside the protocol, the protocol and the spectrum inside the run.
+    CHECK(seconds > 0);
+    CHECK(seconds <= s["jam_seconds"].get<double>());
+    CHECK(s["spectrum_seconds"].get<double>() > 0);
+    CHECK(s["jam_seconds"].get<double>() + s["spectrum_seconds"].get<double>() <=
+          s["wall_time_s"].get<double>());
+    CHECK(s["peak_memory_mib"].get<double>() > 0);
+}
+
+} // namespace
+
+TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm.jam's protocol [issue 19]")
+{
+    const auto [summary, p] = run_bench({{"model", "shell"},
+                                         {"particles", "6"},
+                                         {"nodes_small", "6"},
+                                         {"nodes_large", "8"},
+                                         {"pressure_onset", "1e-5"},
+                                         {"pressures", "1"},
+                                         {"pressure_max", "2e-5"}});
+    check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
+    const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
+    CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
+    CHECK(summary["force_evaluations"].get<long>() == direct.force_evaluations);
+}
+
+TEST_CASE("dpm.bench in 3D: consistent cost keys on the 3D protocol [issue 19]")
+{
+    const auto [summary, p] = run_bench({{"dimension", "3"},
+                                         {"model", "shell"},
+                                         {"particles", "4"},
+                                         {"nodes_small", "12"},
+                                         {"nodes_large", "12"},
+                                         {"pressure_onset", "1e-5"},
+                                         {"pressures", "1"},
+                                         {"pressure_max", "2e-5"}});
+    check_cost_keys(summary, 3, 4 * 12);
+}
+
+TEST_CASE("dpm.bench in 3D refuses disks and vertex counts that name no mesh [issue 19]")
+{
+    CHECK_THROWS_AS(run_bench({{"dimension", "3"}, {"model", "smooth_disk"}}), InputError);
+    CHECK_THROWS_AS(
+        run_bench({{"dimension", "3"}, {"model", "shell"}, {"nodes_small", "12"}, {"nodes_large", "42"}}),
+        InputError);
+}
