@@ -23,6 +23,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
+#include <algorithm>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
@@ -77,16 +78,21 @@ double largest_angle_sine(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
 }
 
 // The lowest modes of m by the sparse solver against the dense spectrum (see the header comment): at least
-// `at_least` of them, more where that count would split a cluster (whose subspace must be compared whole).
+// `at_least` of them and `beyond_zero` past the dense zero modes (how many a packing has depends on its
+// rattlers, i.e. on the packing FIRE reaches), more where that count would split a cluster (whose subspace
+// must be compared whole).
 void check_lowest_modes(const Eigen::MatrixXd& dense, const Eigen::SparseMatrix<double>& sparse, int at_least,
                         double eigenvalue_unit, double paper_threshold)
 {
+    constexpr int beyond_zero = 8;
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reference(dense);
     const Eigen::VectorXd& exact = reference.eigenvalues();
     const auto n = dense.rows();
     const double lambda_max = exact(n - 1);
     const double cluster_gap = 1e-6 * lambda_max;
-    int count = at_least;
+    const double threshold = zero_mode_threshold(exact / eigenvalue_unit, paper_threshold);
+    const SpectrumCounts dense_counts = count_modes(exact / eigenvalue_unit, threshold);
+    int count = std::max(at_least, dense_counts.first_positive() + beyond_zero);
     while (count < n && exact(count) - exact(count - 1) < cluster_gap)
         ++count;
     REQUIRE(count < n);
@@ -105,10 +111,8 @@ void check_lowest_modes(const Eigen::MatrixXd& dense, const Eigen::SparseMatrix<
         CHECK(std::abs(lambda(k) - exact(k)) <= residual);
     }
     // Zero modes: the same count against the same threshold (max|lambda| from the Lanczos lambda_max).
-    const double threshold = zero_mode_threshold(exact / eigenvalue_unit, paper_threshold);
     const double sparse_threshold = zero_mode_threshold(
         n, std::max(std::abs(lambda(0)), lowest.largest_eigenvalue) / eigenvalue_unit, paper_threshold);
-    const SpectrumCounts dense_counts = count_modes(exact / eigenvalue_unit, threshold);
     const SpectrumCounts sparse_counts = count_modes(lambda / eigenvalue_unit, sparse_threshold);
     MESSAGE("zero modes dense " << dense_counts.zero << ", sparse " << sparse_counts.zero);
     CHECK(dense_counts.zero > 0);

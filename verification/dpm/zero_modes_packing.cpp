@@ -8,6 +8,7 @@
 // a negative eigenvalue counted, 5), and a particle held by one contact of vanishing force was not yet a
 // rattler. Rattlers are now the particles whose contact forces are round-off (rattlers), and the packing's
 // own zero modes those that move more than its rattlers (zero_modes_beyond_rattlers).
+#include "dpm/contact_list.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/modes.hpp"
 #include "support/tolerance.hpp"
@@ -72,14 +73,20 @@ TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rat
     }
 }
 
-TEST_CASE("rattlers held by a contact of vanishing force keep 2 rigid motions each; the packing's own zero "
-          "modes stay the 2 translations [DPM sec. 9.4.3, Fig. 9.14b; decision dpm-zero-mode-count]")
+TEST_CASE("rattlers held by a contact of vanishing force keep 3 rigid motions less one per contact; the "
+          "packing's own zero modes stay the 2 translations [DPM sec. 9.4.3, Fig. 9.14b; decision "
+          "dpm-zero-mode-count]")
 {
-    // 8 elastic shells (4 hexagons, 4 decagons) jammed at P = 1e-7 k_a a0, seed 11: two particles touch only
-    // each other, through one vertex pair whose force is round-off (force balance on each of the two leaves
-    // it none) but whose stiffness is the full k_c (a harmonic contact's curvature does not vanish with its
-    // overlap). The pair has 2 x 3 rigid motions less the one that contact fixes: 5 zero modes, with the
-    // 2 translations of the periodic packing 7. Subtracting a free particle's 3 per rattler would read 1.
+    // 8 elastic shells (4 hexagons, 4 decagons) jammed at P = 1e-7 k_a a0 can leave rattlers that touch
+    // through vertex pairs whose force is round-off (force balance on a rattler leaves it none) but whose
+    // stiffness is the full k_c (a harmonic contact's curvature does not vanish with its overlap). Each such
+    // contact fixes one rigid motion (its normal separation): the rattlers keep 3 per particle less one per
+    // contact (independent constraints for a few contacts at generic angles), and with the 2 translations of
+    // the periodic packing the count is 2 + 3 rattlers - contacts; subtracting a free particle's 3 per
+    // rattler would miss the contacts. Which packing FIRE reaches from a seed, and whether its rattlers touch,
+    // changes with the order of round-off in the forces, so the test takes the first seed whose packing has
+    // such a touching rattler (seed 11 at 6cc1e52, where two rattlers touched each other through one vertex
+    // pair: 7 zero modes).
     JamOptions o;
     o.model = "shell";
     o.particles = 8;
@@ -87,27 +94,25 @@ TEST_CASE("rattlers held by a contact of vanishing force keep 2 rigid motions ea
     o.nodes_large = 10;
     o.pressure_onset = o.pressure_max = 1e-7;
     o.pressures = 0;
-    o.seed = 11;
-    JamResult r = jam(o);
-    const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
-    const ModeSpectrum modes = vibrational_modes(r.system, r.x);
-    const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;
-    const int zero = count_zero_modes(lambda, zero_mode_threshold(lambda, 1e-13));
-    const std::vector<bool> rattling = rattlers(r.system, r.x, force);
-
-    // The case still holds what it tests: rattlers that touch something (a non-zero contact force).
-    Eigen::VectorXd contact_forces = Eigen::VectorXd::Zero(r.x.size());
-    total_energy(r.system, r.x, &contact_forces, nullptr, interaction_part);
-    int touching_rattlers = 0;
-    for (std::size_t q = 0; q < rattling.size(); ++q) {
-        const Particle& p = r.system.particles[q];
-        if (rattling[q] && !contact_forces.segment(2 * p.first, 2 * p.count).isZero(0.0)) ++touching_rattlers;
+    for (o.seed = 1; o.seed <= 40; ++o.seed) {
+        JamResult r = jam(o);
+        const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
+        const std::vector<bool> rattling = rattlers(r.system, r.x, force);
+        int rattler_contacts = 0;
+        for (const VertexContact& contact : vertex_contacts(r.system, r.x))
+            if (rattling[contact.a] || rattling[contact.b]) ++rattler_contacts;
+        if (rattler_contacts == 0) continue;
+        const ModeSpectrum modes = vibrational_modes(r.system, r.x);
+        const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;
+        const int zero = count_zero_modes(lambda, zero_mode_threshold(lambda, 1e-13));
+        const int rattler_count = static_cast<int>(std::count(rattling.begin(), rattling.end(), true));
+        CAPTURE(o.seed);
+        MESSAGE("seed " << o.seed << ": largest force after the polish " << force << ", zero modes " << zero
+                        << ", rattlers " << rattler_count << ", their contacts " << rattler_contacts);
+        CHECK(lambda(0) > -zero_mode_threshold(lambda, 1e-13)); // a minimum
+        CHECK(zero == 2 + 3 * rattler_count - rattler_contacts);
+        CHECK(zero_modes_beyond_rattlers(r.system, modes.eigenvectors.leftCols(zero), rattling) == 2);
+        return;
     }
-    MESSAGE("largest force after the polish " << force << ", zero modes " << zero << ", rattlers "
-                                              << std::count(rattling.begin(), rattling.end(), true));
-    REQUIRE(touching_rattlers == 2);
-    CHECK(std::count(rattling.begin(), rattling.end(), true) == 2);
-    CHECK(lambda(0) > -zero_mode_threshold(lambda, 1e-13)); // a minimum
-    CHECK(zero == 7);
-    CHECK(zero_modes_beyond_rattlers(r.system, modes.eigenvectors.leftCols(zero), rattling) == 2);
+    FAIL("no packing of seeds 1-40 has a rattler that touches another particle");
 }
