@@ -357,7 +357,9 @@ void run_ring_compression(const Parameters& p, RunContext& context)
     s["Lc_over_b0_final"] = last->contact_length;
     s["V_over_V0_final"] = last->volume;
     s["F_over_Fstar_final"] = last->wall_force / F_star;
-    s["Ws_over_Wb_final"] = last->stretch_energy / last->bending_energy;
+    // Undefined (null) for an undeformed ring: both energies vanish, e.g. at strain_max = 4.9e-324.
+    s["Ws_over_Wb_final"] =
+        finite_or_null(last->bending_energy > 0 ? last->stretch_energy / last->bending_energy : NAN);
     if (elastica) {
         const ElasticaState el = elastica_ring_between_plates(last->strain);
         s["elastica_a_over_b0_final"] = el.width;
