@@ -66,11 +66,20 @@ def colour_by(display, view, association, array, preset, grey_without_array=Fals
     display.SetScalarBarVisibility(view, True)
 
 
+def colour_range(array):
+    """The range the colour map of `array` spans: its first and last control point."""
+    points = simple.GetColorTransferFunction(array).RGBPoints  # x, r, g, b per control point
+    return points[0], points[-4]
+
+
 def finish(view, args, array, times, index):
-    """Saves the screenshot args.screenshot names, or opens the interactive window."""
+    """Saves the screenshot args.screenshot names, or opens the interactive window. The line it prints names
+    what was drawn (array, frame, time and the colour range, to 17 digits) so that a test can check it."""
     view.ResetCamera()
     if args.screenshot:
         simple.SaveScreenshot(args.screenshot, view, ImageResolution=[1200, 900])
-        print(f"{script_name()}: wrote {args.screenshot} ({array} at time {times[index]:g}, frame {index})")
+        low, high = colour_range(array)
+        print(f"{script_name()}: wrote {args.screenshot} ({array} at time {times[index]:.17g}, frame {index}, "
+              f"range {low:.17g} {high:.17g})")
     else:
         simple.Interact(view)

@@ -31,8 +31,8 @@ run's tables and summary:
   vtk_readback.py SOFTGRAIN [WORKDIR]
 
 Exit status: 0 all checks pass; 1 a check failed (each failure named on stderr); 77 VTK's Python module is
-missing (`scripts/install-deps --vtk` installs python3-vtk9), which ctest reports as skipped. Run it with
-Debian's /usr/bin/python3, for which python3-vtk9 is installed.
+missing (`scripts/install-deps --vtk` installs ParaView's, python3-paraview), which ctest reports as
+skipped. Run it with Debian's /usr/bin/python3, for which that package is installed.
 """
 
 import json
