@@ -5,6 +5,10 @@ OUT    ?= figures
 MPIRUN ?=
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+# In CI (CI set, as CI services do) a compiler warning fails the build.
+ifneq ($(CI),)
+CMAKE_FLAGS += -DSOFTGRAIN_WERROR=ON
+endif
 
 .PHONY: all deps configure build verify-deps verify verify-fast verify-sanitize reproduce-figures bench clean
 
