@@ -54,8 +54,12 @@ void describe_scene(const Scene& scene)
     };
     std::cout << scene.name << ": " << scene.description << "\n\n";
     row("parameter", "default", "unit", "meaning (allowed)");
-    for (const auto& p : scene.parameters)
-        row(p.name, to_string(p.default_value), p.unit, p.description + " (" + p.allowed() + ")");
+    for (const auto& p : scene.parameters) {
+        std::string old_names;
+        for (const auto& old_name : p.old_names)
+            old_names += (old_names.empty() ? "; deprecated name: " : ", ") + old_name;
+        row(p.name, to_string(p.default_value), p.unit, p.description + " (" + p.allowed() + old_names + ")");
+    }
 }
 
 // A scene to run: a registered name, or a TOML file naming its base scene with `scene = "..."`.

@@ -2,6 +2,7 @@
 #include "core/core_scenes.hpp"
 
 #include "core/harmonic.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 
 #include <algorithm>
@@ -11,11 +12,30 @@ namespace softgrain {
 
 namespace {
 
-void run_harmonic(const Parameters& p, RunContext& context)
+// Units and meanings: harmonic_binding().
+struct HarmonicOptions
 {
-    const HarmonicOscillator oscillator{p.real("mass"), p.real("stiffness")};
-    const double dt = p.real("dt");
-    const double periods = p.real("periods");
+    double mass = 1.0;
+    double stiffness = 100.0;
+    double dt = 1e-3;
+    double periods = 20.0;
+};
+
+OptionBinding<HarmonicOptions> harmonic_binding()
+{
+    OptionBinding<HarmonicOptions> b;
+    b.real(&HarmonicOptions::mass, "mass", "kg", "mass m").positive();
+    b.real(&HarmonicOptions::stiffness, "stiffness", "N/m", "spring stiffness k").positive();
+    b.real(&HarmonicOptions::dt, "dt", "s", "time step; stable for dt < dt_c = 2 sqrt(m/k)").positive();
+    b.real(&HarmonicOptions::periods, "periods", "1", "duration in periods T = 2 pi sqrt(m/k)").at_least(2.0);
+    return b;
+}
+
+void run_harmonic(const HarmonicOptions& options, RunContext& context)
+{
+    const HarmonicOscillator oscillator{options.mass, options.stiffness};
+    const double dt = options.dt;
+    const double periods = options.periods;
 
     auto& trajectory = context.table("trajectory.dat", {{"t", "s", "time"},
                                                         {"x", "m", "position"},
@@ -47,17 +67,9 @@ void run_harmonic(const Parameters& p, RunContext& context)
 
 void register_core_scenes(SceneRegistry& registry)
 {
-    registry.add(Scene{
-        "core.harmonic",
-        "mass on a linear spring, velocity Verlet: period and energy error against theory",
-        {
-            ParameterSpec::real("mass", 1.0, "kg", "mass m").positive(),
-            ParameterSpec::real("stiffness", 100.0, "N/m", "spring stiffness k").positive(),
-            ParameterSpec::real("dt", 1e-3, "s", "time step; stable for dt < dt_c = 2 sqrt(m/k)").positive(),
-            ParameterSpec::real("periods", 20.0, "1", "duration in periods T = 2 pi sqrt(m/k)").at_least(2.0),
-        },
-        run_harmonic,
-    });
+    registry.add(bound_scene(
+        "core.harmonic", "mass on a linear spring, velocity Verlet: period and energy error against theory",
+        harmonic_binding(), run_harmonic));
 }
 
 } // namespace softgrain

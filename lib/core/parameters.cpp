@@ -167,6 +167,12 @@ ParameterSpec& ParameterSpec::keyword_by_default(std::string word)
     return keyword_allowed(std::move(word));
 }
 
+ParameterSpec& ParameterSpec::renamed_from(std::string old_name)
+{
+    old_names.push_back(std::move(old_name));
+    return *this;
+}
+
 std::string ParameterSpec::type_name() const
 {
     switch (type) {
@@ -223,6 +229,9 @@ const ParameterSpec& Parameters::spec(const std::string& name) const
 {
     for (const auto& candidate : specs_)
         if (candidate.name == name) return candidate;
+    for (const auto& candidate : specs_)
+        for (const auto& old_name : candidate.old_names)
+            if (old_name == name) return candidate;
     std::vector<std::string> names;
     for (const auto& candidate : specs_)
         names.push_back(candidate.name);

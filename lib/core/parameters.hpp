@@ -40,9 +40,10 @@ struct ParameterSpec
     double max = std::numeric_limits<double>::infinity();
     bool min_inclusive = true;
     bool max_inclusive = true;
-    bool accepts_infinity = false;     // real parameters only: the literal "inf" is a meaningful value
-    std::vector<std::string> keywords; // real parameters only: words that stand for a computed value
-    std::vector<std::string> choices;  // choice parameters only
+    bool accepts_infinity = false;      // real parameters only: the literal "inf" is a meaningful value
+    std::vector<std::string> keywords;  // real parameters only: words that stand for a computed value
+    std::vector<std::string> choices;   // choice parameters only
+    std::vector<std::string> old_names; // earlier names, still accepted (deprecated; `describe` says so)
 
     static ParameterSpec real(std::string name, double value, std::string unit, std::string description);
     static ParameterSpec integer(std::string name, long long value, std::string unit,
@@ -63,6 +64,9 @@ struct ParameterSpec
     // parameter of the regular polygon). keyword_by_default also makes it the default.
     ParameterSpec& keyword_allowed(std::string word);
     ParameterSpec& keyword_by_default(std::string word);
+    // A renamed parameter keeps its old name as a deprecated alias: scene files and --set may still use
+    // it, and the value is stored (and reported) under the new name.
+    ParameterSpec& renamed_from(std::string old_name);
 
     std::string type_name() const;
     std::string allowed() const; // human-readable statement of what is allowed
