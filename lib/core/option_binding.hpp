@@ -1,8 +1,11 @@
 // Scene parameters declared once, bound to the field of the options struct they fill.
 //
-// A scene's options are a plain struct whose member initialisers are the defaults. The binding names each
-// field once, with its unit, meaning and allowed range; from that one declaration it makes the
-// ParameterSpecs that `describe` prints and the run checks (the defaults are read from the struct, never
+// A scene's options are a struct whose values in one object are the defaults: the struct's member
+// initialisers, or a library setup with the scene's own defaults set on it (OptionBinding(defaults)). The
+// binding names each field once, with its unit, meaning and allowed range; a field is a data member
+// pointer or, for a nested field, a function returning a reference to it
+// ([](Setup& s) -> double& { return s.ring.eta; }). From that one declaration it makes the ParameterSpecs
+// that `describe` prints and the run checks (the defaults are read from the defaults object, never
 // repeated), and it fills and checks the struct for a run:
 //
 //   struct HarmonicOptions { double mass = 1.0; double dt = 1e-3; };
@@ -24,15 +27,38 @@
 #include "core/parameters.hpp"
 #include "core/scene.hpp"
 
+#include <concepts>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace softgrain {
+
+// A field of Options holding a Value: a data member pointer, or a function of Options& returning Value&.
+template <class F, class Options, class Value>
+concept Field = requires(F field, Options& options)
+{
+    {
+        std::invoke(field, options)
+        } -> std::same_as<Value&>;
+};
+
+// A nested field as one: path(&Setup::ring, &RingSetup::material, &ShellMaterial::h) is a Field of Setup.
+template <class First, class... Rest>
+auto path(First first, Rest... rest)
+{
+    return [=](auto& object) -> decltype(auto) {
+        if constexpr (sizeof...(Rest) == 0)
+            return std::invoke(first, object);
+        else
+            return path(rest...)(std::invoke(first, object));
+    };
+}
 
 template <class Options>
 class OptionBinding
@@ -40,71 +66,86 @@ class OptionBinding
   public:
     using Check = std::function<void(const Options&)>;
 
-    ParameterSpec& real(double Options::*field, std::string name, std::string unit, std::string meaning)
+    // The type a field holds (the enum of a choice).
+    template <class F>
+    using FieldValue = std::remove_reference_t<std::invoke_result_t<F, Options&>>;
+
+    explicit OptionBinding(Options defaults = Options{}) : defaults_(std::move(defaults)) {}
+
+    template <Field<Options, double> F>
+    ParameterSpec& real(F field, std::string name, std::string unit, std::string meaning)
     {
         return bind(
-            ParameterSpec::real(std::move(name), defaults().*field, std::move(unit), std::move(meaning)),
-            [field](const Parameters& p, const std::string& key, Options& o) { o.*field = p.real(key); });
+            field,
+            ParameterSpec::real(std::move(name), default_of(field), std::move(unit), std::move(meaning)),
+            [](const Parameters& p, const std::string& key) { return p.real(key); });
     }
 
     // An int field: its spec refuses values above INT_MAX (ParameterSpec::integer), so the cast cannot narrow.
-    ParameterSpec& integer(int Options::*field, std::string name, std::string unit, std::string meaning)
+    template <Field<Options, int> F>
+    ParameterSpec& integer(F field, std::string name, std::string unit, std::string meaning)
     {
         return bind(
-            ParameterSpec::integer(std::move(name), defaults().*field, std::move(unit), std::move(meaning)),
-            [field](const Parameters& p, const std::string& key, Options& o) {
-                o.*field = static_cast<int>(p.integer(key));
-            });
+            field,
+            ParameterSpec::integer(std::move(name), default_of(field), std::move(unit), std::move(meaning)),
+            [](const Parameters& p, const std::string& key) { return static_cast<int>(p.integer(key)); });
     }
 
     // A long field (step counts): the whole range of a long, which is that of the parsed long long here.
-    ParameterSpec& count(long Options::*field, std::string name, std::string unit, std::string meaning)
+    template <Field<Options, long> F>
+    ParameterSpec& count(F field, std::string name, std::string unit, std::string meaning)
     {
         static_assert(sizeof(long) == sizeof(long long), "a long count holds every parsed integer");
         ParameterSpec spec =
-            ParameterSpec::integer(std::move(name), defaults().*field, std::move(unit), std::move(meaning));
+            ParameterSpec::integer(std::move(name), default_of(field), std::move(unit), std::move(meaning));
         spec.max = static_cast<double>(std::numeric_limits<long>::max());
-        return bind(std::move(spec), [field](const Parameters& p, const std::string& key, Options& o) {
-            o.*field = static_cast<long>(p.integer(key));
+        return bind(field, std::move(spec), [](const Parameters& p, const std::string& key) {
+            return static_cast<long>(p.integer(key));
         });
     }
 
-    ParameterSpec& seed(std::uint64_t Options::*field, std::string name, std::string meaning)
+    // A random seed, 0 to 2^63 - 1 (ParameterSpec::seed), so the cast to unsigned keeps its value.
+    template <Field<Options, std::uint64_t> F>
+    ParameterSpec& seed(F field, std::string name, std::string meaning)
     {
-        return bind(ParameterSpec::seed(std::move(name), static_cast<long long>(defaults().*field),
+        return bind(field,
+                    ParameterSpec::seed(std::move(name), static_cast<long long>(default_of(field)),
                                         std::move(meaning)),
-                    [field](const Parameters& p, const std::string& key, Options& o) {
-                        o.*field = static_cast<std::uint64_t>(p.integer(key)); // a seed spec is >= 0
+                    [](const Parameters& p, const std::string& key) {
+                        return static_cast<std::uint64_t>(p.integer(key));
                     });
     }
 
-    ParameterSpec& boolean(bool Options::*field, std::string name, std::string meaning)
+    template <Field<Options, bool> F>
+    ParameterSpec& boolean(F field, std::string name, std::string meaning)
     {
-        return bind(
-            ParameterSpec::boolean(std::move(name), defaults().*field, std::move(meaning)),
-            [field](const Parameters& p, const std::string& key, Options& o) { o.*field = p.boolean(key); });
+        return bind(field, ParameterSpec::boolean(std::move(name), default_of(field), std::move(meaning)),
+                    [](const Parameters& p, const std::string& key) { return p.boolean(key); });
     }
 
-    // A choice parsed into an enum: `names` lists every value with the word a user types for it.
-    template <class Enum>
-    ParameterSpec& choice(Enum Options::*field, std::string name,
-                          std::vector<std::pair<std::string, Enum>> names, std::string meaning)
+    // A choice: `names` lists every value the field can take (an enum, or a bool) with the word a user
+    // types for it; the library then never compares strings.
+    template <class F>
+    requires Field<F, Options, FieldValue<F>> ParameterSpec&
+    choice(F field, std::string name, std::vector<std::pair<std::string, FieldValue<F>>> names,
+           std::string meaning)
     {
         std::vector<std::string> words;
         std::string default_word;
         for (const auto& [word, value] : names) {
             words.push_back(word);
-            if (value == defaults().*field) default_word = word;
+            if (value == default_of(field)) default_word = word;
         }
         if (default_word.empty())
             throw std::logic_error("OptionBinding: the default of '" + name +
                                    "' has no name among its choices");
         return bind(
-            ParameterSpec::choice(std::move(name), default_word, std::move(words), std::move(meaning)),
-            [field, names](const Parameters& p, const std::string& key, Options& o) {
+            field, ParameterSpec::choice(std::move(name), default_word, std::move(words), std::move(meaning)),
+            [names](const Parameters& p, const std::string& key) {
                 const std::string& word = p.choice(key); // one of the names: the spec checked it
                 for (const auto& [candidate, value] : names)
-                    if (candidate == word) o.*field = value;
+                    if (candidate == word) return value;
+                throw std::logic_error("OptionBinding: '" + key + "' = '" + word + "' has no value");
             });
     }
 
@@ -122,7 +163,7 @@ class OptionBinding
     // spec), then the cross-parameter checks.
     Options read(const Parameters& p) const
     {
-        Options options{};
+        Options options = defaults_;
         for (std::size_t k = 0; k < specs_.size(); ++k)
             readers_[k](p, specs_[k].name, options);
         for (const Check& cross_check : checks_)
@@ -133,22 +174,29 @@ class OptionBinding
   private:
     using Reader = std::function<void(const Parameters&, const std::string&, Options&)>;
 
-    static const Options& defaults()
+    template <class F>
+    auto default_of(F field) const
     {
-        static const Options options{};
-        return options;
+        Options copy = defaults_;
+        return std::invoke(field, copy);
     }
 
-    ParameterSpec& bind(ParameterSpec spec, Reader reader)
+    // Declares `spec` and how its value reaches `field`: read_value(p, name) converts the checked value.
+    template <class F, class ReadValue>
+    ParameterSpec& bind(F field, ParameterSpec spec, ReadValue read_value)
     {
         for (const ParameterSpec& existing : specs_)
             if (existing.name == spec.name)
                 throw std::logic_error("OptionBinding: parameter '" + spec.name + "' declared twice");
         specs_.push_back(std::move(spec));
-        readers_.push_back(std::move(reader));
+        readers_.push_back(
+            [field, read_value](const Parameters& p, const std::string& key, Options& options) {
+                std::invoke(field, options) = read_value(p, key);
+            });
         return specs_.back();
     }
 
+    Options defaults_;
     std::vector<ParameterSpec> specs_;
     std::vector<Reader> readers_;
     std::vector<Check> checks_;

@@ -1,6 +1,7 @@
 // Scenes of SPD assemblies (Trivino et al., section 5): spd.bench, spd.compaction.
 #include "core/errors.hpp"
 #include "core/fits.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
@@ -25,13 +26,43 @@ using namespace spd;
 // each launched with a random rigid velocity of 0.02 r per time step (r the vertex radius), `steps`
 // undamped-in-the-bulk velocity-Verlet steps (contact damping only): rings collide, bend and rearrange,
 // the neighbour list is rebuilt every few tens of steps. Reports vertex-steps per second of the step loop.
-void run_bench(const Parameters& p, RunContext& context)
+// spd.bench's options: the assembly and the number of time steps.
+struct BenchOptions
 {
     AssemblySetup setup;
-    setup.particles = static_cast<int>(p.integer("particles"));
-    setup.ring.nodes = static_cast<int>(p.integer("nodes"));
-    setup.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    setup.ring.dt_factor = p.real("dt_factor");
+    long steps = 2000;
+};
+
+// The scene's defaults where they differ from the library's.
+BenchOptions bench_defaults()
+{
+    BenchOptions options;
+    options.setup.particles = 400;
+    options.setup.ring.nodes = 32;
+    options.setup.ring.dt_factor = 0.2;
+    return options;
+}
+
+OptionBinding<BenchOptions> bench_binding()
+{
+    OptionBinding<BenchOptions> b(bench_defaults());
+    b.integer(path(&BenchOptions::setup, &AssemblySetup::particles), "particles", "1", "number of rings")
+        .at_least(1);
+    b.integer(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::nodes), "nodes", "1",
+              "vertices per ring")
+        .at_least(8);
+    b.count(&BenchOptions::steps, "steps", "1", "time steps (the first is not timed)").at_least(2);
+    b.seed(path(&BenchOptions::setup, &AssemblySetup::seed), "seed", "seed of the initial velocities");
+    b.real(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::dt_factor), "dt_factor", "1",
+           "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
+           "(decision spd-vertex-pair-stability)")
+        .positive();
+    return b;
+}
+
+void run_bench(const BenchOptions& options, RunContext& context)
+{
+    const AssemblySetup& setup = options.setup;
     context.record_seed(setup.seed);
     const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(setup.particles))));
     Assembly a = rings_in_box(setup, columns);
@@ -49,7 +80,7 @@ void run_bench(const Parameters& p, RunContext& context)
         const double angle = rng.uniform(0, 2 * std::numbers::pi);
         a.model.set_velocity(shell, speed * Vec2(std::cos(angle), std::sin(angle)));
     }
-    const long steps = p.integer("steps");
+    const long steps = options.steps;
     a.model.step(dt, 0.0); // first force evaluation and list build outside the timing
     const auto start = std::chrono::steady_clock::now();
     for (long n = 1; n < steps; ++n)
@@ -81,28 +112,77 @@ void run_bench(const Parameters& p, RunContext& context)
     s["neighbour_skin"] = a.model.neighbour_skin();
 }
 
-// spd.compaction (section 5, Figs. 26-29): deposition under gravity, uniaxial loading to eps = strain_max
-// at constant top-wall speed, unloading back to H0 (lib/spd/compaction.hpp).
-void run_compaction(const Parameters& p, RunContext& context)
+// The scene's defaults where they differ from the library's.
+CompactionSetup compaction_defaults()
 {
     CompactionSetup setup;
-    setup.assembly.particles = static_cast<int>(p.integer("particles"));
-    setup.assembly.radius_spread = p.real("radius_spread");
-    setup.assembly.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    RingSetup& ring = setup.assembly.ring;
-    ring.nodes = static_cast<int>(p.integer("nodes"));
-    ring.material.h = p.real("h");
-    ring.eta = p.real("eta");
-    ring.plastic_ratio = p.real("plastic_ratio");
-    setup.gravity = p.real("gravity");
-    setup.rest_tolerance = p.real("rest_tolerance");
-    setup.wall_speed = p.real("wall_speed");
-    setup.strain_max = p.real("strain_max");
-    setup.stress_max = p.real("stress_max");
-    ring.dt_factor = p.real("dt_factor");
-    if (ring.material.h >= 0.5 * ring.radius)
-        throw InputError("h = " + std::to_string(ring.material.h) +
-                         ": the shell must be thin against the ring; allowed: h < 0.5 R = 0.5 m");
+    setup.assembly.particles = 40;
+    setup.assembly.radius_spread = 0.15;
+    setup.assembly.ring.nodes = 16;
+    setup.assembly.ring.material.h = 0.1;
+    setup.assembly.ring.dt_factor = 0.2;
+    return setup;
+}
+
+OptionBinding<CompactionSetup> compaction_binding()
+{
+    const auto ring = [](auto... field) {
+        return path(&CompactionSetup::assembly, &AssemblySetup::ring, field...);
+    };
+    OptionBinding<CompactionSetup> b(compaction_defaults());
+    b.integer(path(&CompactionSetup::assembly, &AssemblySetup::particles), "particles", "1",
+              "number of rings (the paper: 500)")
+        .at_least(2);
+    b.integer(ring(&RingSetup::nodes), "nodes", "1", "vertices per ring").at_least(8);
+    b.real(ring(&RingSetup::material, &ShellMaterial::h), "h", "m",
+           "shell thickness (2r = h; mean ring radius R = 1 m)")
+        .positive();
+    b.real(path(&CompactionSetup::assembly, &AssemblySetup::radius_spread), "radius_spread", "1",
+           "Delta R/R, standard deviation of the radii")
+        .non_negative()
+        .below(0.5);
+    b.real(ring(&RingSetup::eta), "eta", "1",
+           "core-to-shell stiffness ratio, eq. (24); inf: incompressible core")
+        .non_negative()
+        .infinity_allowed();
+    b.real(ring(&RingSetup::plastic_ratio), "plastic_ratio", "1", "M_b^Y/M*, eq. (32); inf: elastic shells")
+        .positive()
+        .infinity_allowed();
+    b.real(&CompactionSetup::wall_speed, "wall_speed", "R omega_2",
+           "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
+        .positive();
+    b.real(&CompactionSetup::strain_max, "strain_max", "1", "largest vertical strain ln(H0/H)")
+        .positive()
+        .below(1.0);
+    b.real(&CompactionSetup::stress_max, "stress_max", "sigma*",
+           "loading also ends when sigma reaches this (incompressible rings jam before eps = ln(V0/V_s))")
+        .positive()
+        .infinity_allowed();
+    b.real(&CompactionSetup::gravity, "gravity", "EI/R^2", "particle weight during the deposition")
+        .positive();
+    b.real(&CompactionSetup::rest_tolerance, "rest_tolerance", "particle weight",
+           "deposition at rest when the largest unbalanced vertex force is below this")
+        .positive();
+    b.real(ring(&RingSetup::dt_factor), "dt_factor", "1",
+           "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
+           "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
+        .positive();
+    b.seed(path(&CompactionSetup::assembly, &AssemblySetup::seed), "seed",
+           "seed of the radii and of the deposition");
+    b.check([](const CompactionSetup& setup) {
+        const RingSetup& ring_setup = setup.assembly.ring;
+        if (ring_setup.material.h >= 0.5 * ring_setup.radius)
+            throw InputError("h = " + std::to_string(ring_setup.material.h) +
+                             ": the shell must be thin against the ring; allowed: h < 0.5 R = 0.5 m");
+    });
+    return b;
+}
+
+// spd.compaction (section 5, Figs. 26-29): deposition under gravity, uniaxial loading to eps = strain_max
+// at constant top-wall speed, unloading back to H0 (lib/spd/compaction.hpp).
+void run_compaction(const CompactionSetup& setup, RunContext& context)
+{
+    const RingSetup& ring = setup.assembly.ring;
     context.record_seed(setup.assembly.seed);
     const RingScales sc = ring_scales(ring);
     const double R = ring.radius, s_depth = ring.material.s, sigma_star = sc.characteristic.sigma_star;
@@ -232,68 +312,19 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
         return spd::shell_model_memory(double(p.integer("particles")) * double(p.integer("nodes")),
                                        "vertices (particles x nodes)");
     };
-    registry.add(Scene{
-        "spd.bench",
-        "SPD speed: elastic rings colliding in a box; vertex-steps per second of the time-step loop",
-        {
-            ParameterSpec::integer("particles", 400, "1", "number of rings").at_least(1),
-            ParameterSpec::integer("nodes", 32, "1", "vertices per ring").at_least(8),
-            ParameterSpec::integer("steps", 2000, "1", "time steps (the first is not timed)").at_least(2),
-            ParameterSpec::seed("seed", 1, "seed of the initial velocities"),
-            ParameterSpec::real("dt_factor", 0.2, "1",
-                                "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
-                                "(decision spd-vertex-pair-stability)")
-                .positive(),
-        },
-        run_bench}
-                     .needing(rings_memory));
-    registry.add(Scene{
+    registry.add(
+        bound_scene(
+            "spd.bench",
+            "SPD speed: elastic rings colliding in a box; vertex-steps per second of the time-step loop",
+            bench_binding(), run_bench)
+            .needing(rings_memory));
+    Scene compaction = bound_scene(
         "spd.compaction",
-        "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell rings "
-        "deposited under gravity; sigma/sigma*, void ratio, Delta V_s/Delta V, W_i/<W> (Figs. 26-29)",
-        {
-            ParameterSpec::integer("particles", 40, "1", "number of rings (the paper: 500)").at_least(2),
-            ParameterSpec::integer("nodes", 16, "1", "vertices per ring").at_least(8),
-            ParameterSpec::real("h", 0.1, "m", "shell thickness (2r = h; mean ring radius R = 1 m)")
-                .positive(),
-            ParameterSpec::real("radius_spread", 0.15, "1", "Delta R/R, standard deviation of the radii")
-                .non_negative()
-                .below(0.5),
-            ParameterSpec::real("eta", 0.0, "1",
-                                "core-to-shell stiffness ratio, eq. (24); inf: incompressible core")
-                .non_negative()
-                .infinity_allowed(),
-            ParameterSpec::real("plastic_ratio", INFINITY, "1", "M_b^Y/M*, eq. (32); inf: elastic shells")
-                .positive()
-                .infinity_allowed(),
-            ParameterSpec::real(
-                "wall_speed", 1e-3, "R omega_2",
-                "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
-                .positive(),
-            ParameterSpec::real("strain_max", 0.3, "1", "largest vertical strain ln(H0/H)")
-                .positive()
-                .below(1.0),
-            ParameterSpec::real("stress_max", 50.0, "sigma*",
-                                "loading also ends when sigma reaches this (incompressible rings jam before "
-                                "eps = ln(V0/V_s))")
-                .positive()
-                .infinity_allowed(),
-            ParameterSpec::real("gravity", 1e-2, "EI/R^2", "particle weight during the deposition")
-                .positive(),
-            ParameterSpec::real("rest_tolerance", 1e-2, "particle weight",
-                                "deposition at rest when the largest unbalanced vertex force is below this")
-                .positive(),
-            ParameterSpec::real(
-                "dt_factor", 0.2, "1",
-                "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
-                "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
-                .positive(),
-            ParameterSpec::seed("seed", 1, "seed of the radii and of the deposition"),
-        },
-        run_compaction,
-        /*checkpoints=*/true}
-                     .needing(rings_memory)
-                     .with_vtk());
+        "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell "
+        "rings deposited under gravity; sigma/sigma*, void ratio, Delta V_s/Delta V, W_i/<W> (Figs. 26-29)",
+        compaction_binding(), run_compaction);
+    compaction.checkpoints = true;
+    registry.add(std::move(compaction).needing(rings_memory).with_vtk());
 }
 
 } // namespace softgrain

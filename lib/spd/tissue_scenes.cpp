@@ -1,5 +1,6 @@
 // Scene spd.tissue (Trivino et al., section 6, Figs. 30-34): tensile fracture of a cellular tissue.
 #include "core/errors.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "spd/shell_model.hpp"
 #include "spd/spd_scenes.hpp"
@@ -206,33 +207,90 @@ LinkBreak break_one_link(ShellModel model, std::size_t index, double approach, b
     return {};
 }
 
-void run_tissue(const Parameters& p, RunContext& context)
+// spd.tissue's options: the tissue and the pull.
+struct TissueOptions
 {
-    TissueSetup setup;
-    setup.columns = static_cast<int>(p.integer("columns"));
-    setup.rows = static_cast<int>(p.integer("rows"));
-    setup.radius_spread = p.real("radius_spread");
-    setup.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    setup.edge_segments = static_cast<int>(p.integer("edge_segments"));
-    setup.vertex_radius = p.real("r");
-    setup.material.h = p.real("h");
-    setup.eta = p.real("eta");
-    setup.plastic_ratio = p.real("plastic_ratio");
-    setup.link_stiffness = p.real("link_stiffness");
-    setup.shear_stiffness_ratio = p.real("shear_stiffness_ratio");
-    setup.cohesion = p.real("cohesion");
-    setup.shear_strength_ratio = p.real("shear_strength_ratio");
-    setup.friction = p.real("friction");
-    setup.sliding_clamps = p.choice("clamps") == "sliding";
+    TissueSetup tissue;
     PullSetup pulling;
-    pulling.pull_rate = p.real("pull_rate");
-    pulling.strain_max = p.real("strain_max");
-    pulling.damping = p.real("damping");
-    pulling.dt_factor = p.real("dt_factor");
-    pulling.stop_fraction = p.real("stop_fraction");
-    if (setup.material.h >= 0.5 * setup.radius)
-        throw InputError("h = " + std::to_string(setup.material.h) +
-                         ": the cell wall must be thin against the cell; allowed: h < 0.5 R = 0.5 m");
+};
+
+// The scene's defaults where they differ from the library's.
+TissueOptions tissue_defaults()
+{
+    TissueOptions options;
+    options.tissue.columns = 8;
+    options.tissue.rows = 10;
+    return options;
+}
+
+OptionBinding<TissueOptions> tissue_binding()
+{
+    const auto cells = [](auto... field) { return path(&TissueOptions::tissue, field...); };
+    const auto pull = [](auto field) { return path(&TissueOptions::pulling, field); };
+    OptionBinding<TissueOptions> b(tissue_defaults());
+    b.integer(cells(&TissueSetup::columns), "columns", "1", "cells per row (mean disk radius R = 1 m)")
+        .at_least(2);
+    b.integer(cells(&TissueSetup::rows), "rows", "1", "rows of cells").at_least(2);
+    b.real(cells(&TissueSetup::radius_spread), "radius_spread", "1",
+           "Delta R/R of the disks whose radical cells make the tissue")
+        .non_negative()
+        .below(0.25);
+    b.seed(cells(&TissueSetup::seed), "seed", "seed of the disk radii");
+    b.integer(cells(&TissueSetup::edge_segments), "edge_segments", "1", "shell elements per cell edge")
+        .at_least(1);
+    b.real(cells(&TissueSetup::vertex_radius), "r", "m",
+           "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "
+           "(link rest distance about 2r, decision spd-tissue-shrink)")
+        .positive();
+    b.real(cells(&TissueSetup::material, &ShellMaterial::h), "h", "m",
+           "cell wall thickness (k_s, k_b from eqs. (10)-(11))")
+        .positive();
+    b.real(cells(&TissueSetup::eta), "eta", "1", "core-to-shell stiffness ratio, eq. (24)").non_negative();
+    b.real(cells(&TissueSetup::plastic_ratio), "plastic_ratio", "1", "M_b^Y/M*, eq. (32); inf: elastic cells")
+        .positive()
+        .infinity_allowed();
+    b.real(cells(&TissueSetup::link_stiffness), "link_stiffness", "k_s",
+           "k_n of the links over the wall stretch stiffness k_s (decision spd-tissue-parameters)")
+        .positive();
+    b.real(cells(&TissueSetup::shear_stiffness_ratio), "shear_stiffness_ratio", "1",
+           "k_t/k_n of the links (the paper's 'k_n = k_t = 0.1 k_n', decision spd-tissue-kt)")
+        .positive();
+    b.real(cells(&TissueSetup::cohesion), "cohesion", "F*",
+           "|f_n^0|, tensile threshold of eq. (39), over F* = k_b/R")
+        .positive();
+    b.real(cells(&TissueSetup::shear_strength_ratio), "shear_strength_ratio", "1",
+           "f_t^0/|f_n^0| of eq. (39)")
+        .positive();
+    b.real(cells(&TissueSetup::friction), "friction", "1", "mu of the contact that replaces a broken link")
+        .non_negative();
+    b.choice(cells(&TissueSetup::sliding_clamps), "clamps", {{"fixed", false}, {"sliding", true}},
+             "cell edges on the bottom and top lines: fixed (glued), or sliding along the "
+             "walls (vertical component imposed only; decision spd-tissue-clamps)");
+    b.real(pull(&PullSetup::pull_rate), "pull_rate", "1/t_c",
+           "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
+        .positive();
+    b.real(pull(&PullSetup::strain_max), "strain_max", "1", "largest eps_h = ln(H/H0)").positive().below(2.0);
+    b.real(pull(&PullSetup::stop_fraction), "stop_fraction", "1",
+           "the run stops once no intact path of links joins the clamps and sigma < stop_fraction "
+           "sigma_max (0: run to strain_max)")
+        .non_negative()
+        .below(1.0);
+    b.real(pull(&PullSetup::damping), "damping", "2 sqrt(m k_s)", "global viscous damping on free vertices")
+        .non_negative();
+    b.real(pull(&PullSetup::dt_factor), "dt_factor", "1", "time step over dt_c = sqrt(m/k_max)").positive();
+    b.check([](const TissueOptions& options) {
+        const TissueSetup& setup = options.tissue;
+        if (setup.material.h >= 0.5 * setup.radius)
+            throw InputError("h = " + std::to_string(setup.material.h) +
+                             ": the cell wall must be thin against the cell; allowed: h < 0.5 R = 0.5 m");
+    });
+    return b;
+}
+
+void run_tissue(const TissueOptions& options, RunContext& context)
+{
+    const TissueSetup& setup = options.tissue;
+    const PullSetup& pulling = options.pulling;
     context.record_seed(setup.seed);
 
     Tissue tissue = build_tissue(setup);
@@ -368,63 +426,14 @@ void run_tissue(const Parameters& p, RunContext& context)
 
 void register_spd_tissue_scenes(SceneRegistry& registry)
 {
-    registry.add(Scene{
-        "spd.tissue",
-        "SPD section 6: tensile fracture of a tissue of Laguerre-Voronoi cells joined by cohesive links "
-        "(eq. 39); sigma/sigma_max vs eps_h, broken links, W/W0 snapshots (Figs. 30-34)",
-        {
-            ParameterSpec::integer("columns", 8, "1", "cells per row (mean disk radius R = 1 m)").at_least(2),
-            ParameterSpec::integer("rows", 10, "1", "rows of cells").at_least(2),
-            ParameterSpec::real("radius_spread", 0.1, "1",
-                                "Delta R/R of the disks whose radical cells make the tissue")
-                .non_negative()
-                .below(0.25),
-            ParameterSpec::seed("seed", 1, "seed of the disk radii"),
-            ParameterSpec::integer("edge_segments", 2, "1", "shell elements per cell edge").at_least(1),
-            ParameterSpec::real("r", 0.02, "m",
-                                "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "
-                                "(link rest distance about 2r, decision spd-tissue-shrink)")
-                .positive(),
-            ParameterSpec::real("h", 0.1, "m", "cell wall thickness (k_s, k_b from eqs. (10)-(11))")
-                .positive(),
-            ParameterSpec::real("eta", 0.0, "1", "core-to-shell stiffness ratio, eq. (24)").non_negative(),
-            ParameterSpec::real("plastic_ratio", INFINITY, "1", "M_b^Y/M*, eq. (32); inf: elastic cells")
-                .positive()
-                .infinity_allowed(),
-            ParameterSpec::real(
-                "link_stiffness", 0.1, "k_s",
-                "k_n of the links over the wall stretch stiffness k_s (decision spd-tissue-parameters)")
-                .positive(),
-            ParameterSpec::real("shear_stiffness_ratio", 0.1, "1",
-                                "k_t/k_n of the links (the paper's 'k_n = k_t = 0.1 k_n', decision "
-                                "spd-tissue-kt)")
-                .positive(),
-            ParameterSpec::real("cohesion", 1.0, "F*",
-                                "|f_n^0|, tensile threshold of eq. (39), over F* = k_b/R")
-                .positive(),
-            ParameterSpec::real("shear_strength_ratio", 1.0, "1", "f_t^0/|f_n^0| of eq. (39)").positive(),
-            ParameterSpec::real("friction", 0.3, "1", "mu of the contact that replaces a broken link")
-                .non_negative(),
-            ParameterSpec::choice(
-                "clamps", "fixed", {"fixed", "sliding"},
-                "cell edges on the bottom and top lines: fixed (glued), or sliding along the "
-                "walls (vertical component imposed only; decision spd-tissue-clamps)"),
-            ParameterSpec::real("pull_rate", 5e-6, "1/t_c",
-                                "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
-                .positive(),
-            ParameterSpec::real("strain_max", 0.3, "1", "largest eps_h = ln(H/H0)").positive().below(2.0),
-            ParameterSpec::real(
-                "stop_fraction", 0.02, "1",
-                "the run stops once no intact path of links joins the clamps and sigma < stop_fraction "
-                "sigma_max (0: run to strain_max)")
-                .non_negative()
-                .below(1.0),
-            ParameterSpec::real("damping", 0.02, "2 sqrt(m k_s)", "global viscous damping on free vertices")
-                .non_negative(),
-            ParameterSpec::real("dt_factor", 0.25, "1", "time step over dt_c = sqrt(m/k_max)").positive(),
-        },
-        run_tissue,
-        /*checkpoints=*/true}
+    Scene tissue =
+        bound_scene("spd.tissue",
+                    "SPD section 6: tensile fracture of a tissue of Laguerre-Voronoi cells joined by "
+                    "cohesive links (eq. 39); sigma/sigma_max vs eps_h, broken links, W/W0 snapshots "
+                    "(Figs. 30-34)",
+                    tissue_binding(), run_tissue);
+    tissue.checkpoints = true;
+    registry.add(std::move(tissue)
                      .needing([](const Parameters& p) {
                          // A cell of a planar tiling has 6 edges on average (Euler's formula).
                          return spd::shell_model_memory(double(p.integer("rows")) *

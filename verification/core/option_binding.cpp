@@ -136,3 +136,29 @@ TEST_CASE("a parameter declared twice is a defect of the scene, found at registr
     binding.real(&BeamOptions::length, "length", "m", "beam length");
     CHECK_THROWS_AS(binding.real(&BeamOptions::strain_max, "length", "1", "again"), std::logic_error);
 }
+
+TEST_CASE("a library setup takes the scene's own defaults; nested fields bind through accessors")
+{
+    struct Ring
+    {
+        double eta = 0;
+    };
+    struct Setup
+    {
+        Ring ring;
+        int particles = 100; // the library's default, not the scene's
+    };
+    Setup scene_defaults;
+    scene_defaults.particles = 40;
+    scene_defaults.ring.eta = 2.0;
+    OptionBinding<Setup> binding(scene_defaults);
+    binding.integer(&Setup::particles, "particles", "1", "rings");
+    binding.real([](Setup& setup) -> double& { return setup.ring.eta; }, "eta", "1", "core stiffness ratio");
+    CHECK(std::get<long long>(spec_named(binding.specs(), "particles").default_value) == 40);
+    CHECK(std::get<double>(spec_named(binding.specs(), "eta").default_value) == 2.0);
+    Parameters p(binding.specs());
+    p.set_from_text("eta", "3.5");
+    const Setup setup = binding.read(p);
+    CHECK(setup.ring.eta == 3.5);
+    CHECK(setup.particles == 40);
+}
