@@ -4,6 +4,7 @@
 #include "dpm/compress_scene.hpp"
 
 #include "core/fits.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/compress.hpp"
 #include "dpm/spring_network.hpp"
@@ -13,20 +14,63 @@
 
 namespace softgrain::dpm {
 
-void run_compress2d(const Parameters& p, RunContext& context)
+namespace {
+
+enum class Compress2dBody { shell, spring_network };
+
+// dpm.compress2d's options: the compression, the body, and what the report fits and compares.
+struct Compress2dOptions
 {
-    CompressionOptions o;
-    o.nodes = static_cast<int>(p.integer("nodes"));
-    o.kl = p.real("kl");
-    o.kb = p.real("kb");
-    o.ka = p.real("ka");
-    o.network_nodes = static_cast<int>(p.integer("network_nodes"));
-    o.network_jitter = p.real("jitter");
-    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    o.steps = static_cast<int>(p.integer("steps"));
-    o.delta_min = p.real("delta_min");
-    o.delta_max = p.real("delta_max");
-    const bool network = p.choice("model") == "spring_network";
+    CompressionOptions compression;
+    Compress2dBody body = Compress2dBody::shell;
+    double fit_max = 1e-2; // small-strain exponents fitted for delta/D up to this
+    double D_tilde = 1.0;  // D~ = D/l of eq. (9.14)
+};
+
+OptionBinding<Compress2dOptions> compress2d_binding()
+{
+    const auto compression = [](auto field) { return path(&Compress2dOptions::compression, field); };
+    OptionBinding<Compress2dOptions> b;
+    b.choice(&Compress2dOptions::body, "model",
+             {{"shell", Compress2dBody::shell}, {"spring_network", Compress2dBody::spring_network}},
+             "elastic shell (Fig. 9.10b) or spring-network disk (Fig. 9.10a)");
+    b.integer(compression(&CompressionOptions::nodes), "nodes", "1", "shell: vertices N_mu (paper: 100)")
+        .at_least(8);
+    b.real(compression(&CompressionOptions::kl), "kl", "k_c", "shell: edge stiffness k_l/k_c").positive();
+    b.real(compression(&CompressionOptions::kb), "kb", "k_c sigma^2",
+           "shell: bending stiffness k_b/(k_c sigma^2)")
+        .positive();
+    b.real(compression(&CompressionOptions::ka), "ka", "k_c sigma^2/a0^2",
+           "shell: area stiffness k_a a0^2/(k_c sigma^2)")
+        .positive();
+    b.integer(compression(&CompressionOptions::network_nodes), "network_nodes", "1",
+              "network: nodes (paper: 1100, 3197 springs)")
+        .at_least(7);
+    b.real(compression(&CompressionOptions::network_jitter), "jitter", "lattice spacing",
+           "network: random node displacement (disorder) of the triangular lattice")
+        .non_negative()
+        .below(0.5);
+    b.seed(compression(&CompressionOptions::seed), "seed", "network: seed of the node displacements");
+    b.integer(compression(&CompressionOptions::steps), "steps", "1", "compression steps, log-spaced")
+        .at_least(3);
+    b.real(compression(&CompressionOptions::delta_min), "delta_min", "D", "smallest compression delta/D")
+        .positive();
+    b.real(compression(&CompressionOptions::delta_max), "delta_max", "D", "largest compression delta/D")
+        .positive()
+        .below(1.0);
+    b.real(&Compress2dOptions::fit_max, "fit_max", "D",
+           "small-strain exponents fitted for delta/D up to this")
+        .positive();
+    b.real(&Compress2dOptions::D_tilde, "D_tilde", "1",
+           "D~ = D/l, cylinder diameter over length in eq. (9.14)")
+        .positive();
+    return b;
+}
+
+void run_compress2d(const Compress2dOptions& options, RunContext& context)
+{
+    const CompressionOptions& o = options.compression;
+    const bool network = options.body == Compress2dBody::spring_network;
     if (network) context.record_seed(o.seed);
     // ParaView frames, one per compression step, delta/D as the time value: the body (the shell as a
     // polygon, the network as its nodes (vertex cells) and springs (lines)) and the plates.
@@ -56,7 +100,7 @@ void run_compress2d(const Parameters& p, RunContext& context)
     // shell, E = k_l (stretching modulus k_l l0 over a wall thickness sigma = l0) and nu = 0.
     const double E = network ? triangular_lattice_young_modulus(o.network_k) : o.kl;
     const double nu = network ? triangular_lattice_poisson_ratio : 0.0;
-    const double d_tilde = p.real("D_tilde");
+    const double d_tilde = options.D_tilde;
 
     auto& table = context.table(
         "force.dat",
@@ -70,7 +114,7 @@ void run_compress2d(const Parameters& p, RunContext& context)
         const double f_tilde = s.force * (1 - nu * nu) / (E * r.diameter * d_tilde);
         const double cylinder = s.force > 0 ? cylinder_compression(f_tilde, d_tilde) : 0.0;
         table.row({s.delta_over_d, s.force, s.force / r.diameter, f_tilde, cylinder});
-        if (s.delta_over_d <= p.real("fit_max") && s.force > 0) {
+        if (s.delta_over_d <= options.fit_max && s.force > 0) {
             fit_delta.push_back(s.delta_over_d);
             fit_force.push_back(s.force);
             fit_delta_cylinder.push_back(cylinder);
@@ -92,32 +136,16 @@ void run_compress2d(const Parameters& p, RunContext& context)
     }
 }
 
+} // namespace
+
+void run_compress2d(const Parameters& p, RunContext& context)
+{
+    run_compress2d(compress2d_binding().read(p), context);
+}
+
 std::vector<ParameterSpec> compress2d_parameters()
 {
-    return {
-        ParameterSpec::choice("model", "shell", {"shell", "spring_network"},
-                              "elastic shell (Fig. 9.10b) or spring-network disk (Fig. 9.10a)"),
-        ParameterSpec::integer("nodes", 100, "1", "shell: vertices N_mu (paper: 100)").at_least(8),
-        ParameterSpec::real("kl", 1.0, "k_c", "shell: edge stiffness k_l/k_c").positive(),
-        ParameterSpec::real("kb", 1.0, "k_c sigma^2", "shell: bending stiffness k_b/(k_c sigma^2)")
-            .positive(),
-        ParameterSpec::real("ka", 1.0, "k_c sigma^2/a0^2", "shell: area stiffness k_a a0^2/(k_c sigma^2)")
-            .positive(),
-        ParameterSpec::integer("network_nodes", 1100, "1", "network: nodes (paper: 1100, 3197 springs)")
-            .at_least(7),
-        ParameterSpec::real("jitter", 0.2, "lattice spacing",
-                            "network: random node displacement (disorder) of the triangular lattice")
-            .non_negative()
-            .below(0.5),
-        ParameterSpec::seed("seed", 1, "network: seed of the node displacements"),
-        ParameterSpec::integer("steps", 30, "1", "compression steps, log-spaced").at_least(3),
-        ParameterSpec::real("delta_min", 1e-4, "D", "smallest compression delta/D").positive(),
-        ParameterSpec::real("delta_max", 0.2, "D", "largest compression delta/D").positive().below(1.0),
-        ParameterSpec::real("fit_max", 1e-2, "D", "small-strain exponents fitted for delta/D up to this")
-            .positive(),
-        ParameterSpec::real("D_tilde", 1.0, "1", "D~ = D/l, cylinder diameter over length in eq. (9.14)")
-            .positive(),
-    };
+    return compress2d_binding().specs();
 }
 
 } // namespace softgrain::dpm
