@@ -149,6 +149,16 @@ class OptionBinding
             });
     }
 
+    // A choice kept as the word itself, for a library that looks its value up by name (a mesh by its name).
+    template <Field<Options, std::string> F>
+    ParameterSpec& word(F field, std::string name, std::vector<std::string> words, std::string meaning)
+    {
+        return bind(
+            field,
+            ParameterSpec::choice(std::move(name), default_of(field), std::move(words), std::move(meaning)),
+            [](const Parameters& p, const std::string& key) { return p.choice(key); });
+    }
+
     // A check across parameters, run on the filled options before the scene starts; it throws InputError
     // naming the keys involved.
     OptionBinding& check(Check cross_check)

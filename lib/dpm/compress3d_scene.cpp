@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/fits.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/compress3d.hpp"
 #include "dpm/compress_scene.hpp"
@@ -43,39 +44,102 @@ std::optional<double> pole_contact_exponent(const CompressionResult& r)
     return fit_power_law_exponent(delta, force, minimum_exponent_points);
 }
 
-} // namespace
+enum class Compress3dBody { tetrahedra, shell, spring_network };
 
-void run_compress3d(const Parameters& p, RunContext& context)
+// dpm.compress3d's options: the compression, the body, and the report's fit windows.
+struct Compress3dOptions
 {
-    Compression3dOptions o;
-    o.mesh = p.choice("mesh");
-    o.E = p.real("E");
-    o.nu = p.real("nu");
-    o.kv = p.real("kv");
-    o.ka = p.real("ka");
-    o.kb = p.real("kb");
-    o.network_nodes = static_cast<int>(p.integer("network_nodes"));
-    o.cutoff = p.real("cutoff");
-    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    o.schedule.kp = p.real("kp");
-    o.schedule.delta_min = p.real("delta_min");
-    o.schedule.delta_max = p.real("delta_max");
-    o.schedule.steps = static_cast<int>(p.integer("steps"));
-    o.schedule.force_tolerance = p.real("force_tolerance");
-    const auto require_below = [&p](const std::string& low, const std::string& high) {
-        if (p.real(low) >= p.real(high))
-            throw InputError("parameter '" + low + "' = '" + std::to_string(p.real(low)) + "' is not below " +
-                             high + " = " + std::to_string(p.real(high)) + "; allowed: " + low + " < " +
-                             high);
+    Compression3dOptions compression = scene_compression_defaults();
+    Compress3dBody body = Compress3dBody::tetrahedra;
+    double small_fit_max = 3e-3;          // [D]
+    double fit_min = 0.05, fit_max = 0.2; // [D]
+
+    // The scene's defaults where they differ from the library's.
+    static Compression3dOptions scene_compression_defaults()
+    {
+        Compression3dOptions o;
+        o.schedule.delta_min = 1e-3;
+        o.schedule.steps = 24;
+        o.schedule.force_tolerance = 1e-8;
+        return o;
+    }
+};
+
+// `low` < `high`, else an InputError naming both keys.
+void require_below(const std::string& low_key, double low, const std::string& high_key, double high)
+{
+    if (low >= high)
+        throw InputError("parameter '" + low_key + "' = '" + std::to_string(low) + "' is not below " +
+                         high_key + " = " + std::to_string(high) + "; allowed: " + low_key + " < " +
+                         high_key);
+}
+
+OptionBinding<Compress3dOptions> compress3d_binding()
+{
+    const auto body = [](auto... field) { return path(&Compress3dOptions::compression, field...); };
+    const auto schedule = [](auto field) {
+        return path(&Compress3dOptions::compression, &Compression3dOptions::schedule, field);
     };
-    require_below("delta_min", "delta_max");
-    require_below("fit_min", "fit_max");
-    const std::string model = p.choice("model");
-    if (model == "spring_network") context.record_seed(o.seed);
+    OptionBinding<Compress3dOptions> b;
+    b.choice(&Compress3dOptions::body, "model",
+             {{"tetrahedra", Compress3dBody::tetrahedra},
+              {"shell", Compress3dBody::shell},
+              {"spring_network", Compress3dBody::spring_network}},
+             "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
+             "eq. 9.2) or spring-network ball (Fig. 9.11a)");
+    b.word(body(&Compression3dOptions::mesh), "mesh",
+           {"icosahedron", "geodesic42", "geodesic162", "geodesic642", "geodesic2562"},
+           "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642, 2562; paper's shell: 162)");
+    b.real(body(&Compression3dOptions::E), "E", "k_c/sigma",
+           "tetrahedra: Young's modulus of each tetrahedron")
+        .positive();
+    b.real(body(&Compression3dOptions::nu), "nu", "1", "tetrahedra: Poisson ratio").at_least(0.0).below(0.5);
+    b.real(body(&Compression3dOptions::kv), "kv", "k_c/sigma^4", "shell: volume stiffness k_v of eq. (9.2)")
+        .positive();
+    b.real(body(&Compression3dOptions::ka), "ka", "k_c/sigma^2",
+           "shell: face-area stiffness k_a of eq. (9.2)")
+        .positive();
+    b.real(body(&Compression3dOptions::kb), "kb", "k_c sigma^2", "shell: bending stiffness k_b of eq. (9.2)")
+        .positive();
+    b.integer(body(&Compression3dOptions::network_nodes), "network_nodes", "1",
+              "network: nodes (paper: 3765)")
+        .at_least(50);
+    b.real(body(&Compression3dOptions::cutoff), "cutoff", "node spacing",
+           "network: springs join nodes closer than this")
+        .positive();
+    b.seed(body(&Compression3dOptions::seed), "seed", "network: seed of the interior node placement");
+    b.real(schedule(&PlateSchedule::kp), "kp", "k_c", "plate-vertex spring k_p (paper: 4 k_c)").positive();
+    b.integer(schedule(&PlateSchedule::steps), "steps", "1", "compression steps, log-spaced").at_least(3);
+    b.real(schedule(&PlateSchedule::delta_min), "delta_min", "D", "smallest compression delta/D").positive();
+    b.real(schedule(&PlateSchedule::delta_max), "delta_max", "D", "largest compression delta/D")
+        .positive()
+        .below(0.5);
+    b.real(&Compress3dOptions::small_fit_max, "small_fit_max", "D",
+           "small_strain_exponent: fit over delta/D from delta_min up to this")
+        .positive();
+    b.real(&Compress3dOptions::fit_min, "fit_min", "D",
+           "large_strain_exponent: fit over delta/D from this ...")
+        .positive();
+    b.real(&Compress3dOptions::fit_max, "fit_max", "D", "... up to this").positive();
+    b.real(schedule(&PlateSchedule::force_tolerance), "force_tolerance", "k_c sigma",
+           "FIRE stops at this rms force per degree of freedom")
+        .positive();
+    b.check([](const Compress3dOptions& options) {
+        const PlateSchedule& plates = options.compression.schedule;
+        require_below("delta_min", plates.delta_min, "delta_max", plates.delta_max);
+        require_below("fit_min", options.fit_min, "fit_max", options.fit_max);
+    });
+    return b;
+}
+
+void run_compress3d(const Compress3dOptions& options, RunContext& context)
+{
+    const Compression3dOptions& o = options.compression;
+    const bool network = options.body == Compress3dBody::spring_network;
+    if (network) context.record_seed(o.seed);
     // ParaView frames, one per compression step, delta/D as the time value: the body (the surface mesh of the
     // tetrahedra or the shell, the network's nodes and springs) and the plates, with field data delta_over_D
     // and force.
-    const bool network = model == "spring_network";
     const TriangleMesh mesh = network ? TriangleMesh{} : compression_mesh(o.mesh);
     const SpringNetwork net = network && context.vtk()
                                   ? disordered_sphere_network(o.network_nodes, o.cutoff, o.network_k, o.seed)
@@ -100,9 +164,10 @@ void run_compress3d(const Parameters& p, RunContext& context)
         context.vtk()->write(sample.delta_over_d, parts);
     };
     const BodyObserver observe = context.vtk() ? frame : BodyObserver{};
-    const Compression3dResult r = model == "tetrahedra" ? compress3d_tetrahedra(o, observe)
-                                  : model == "shell"    ? compress3d_shell(o, observe)
-                                                        : compress3d_network(o, observe);
+    const Compression3dResult r = options.body == Compress3dBody::tetrahedra
+                                      ? compress3d_tetrahedra(o, observe)
+                                  : options.body == Compress3dBody::shell ? compress3d_shell(o, observe)
+                                                                          : compress3d_network(o, observe);
     const CompressionResult& c = r.compression;
     context.count_steps(c.iterations);
 
@@ -129,8 +194,8 @@ void run_compress3d(const Parameters& p, RunContext& context)
     s["nu"] = r.nu;
     s["vertices"] = r.vertices;
     s["small_strain_exponent"] =
-        value_or_null(exponent_in_window(c, o.schedule.delta_min, p.real("small_fit_max")));
-    s["large_strain_exponent"] = value_or_null(exponent_in_window(c, p.real("fit_min"), p.real("fit_max")));
+        value_or_null(exponent_in_window(c, o.schedule.delta_min, options.small_fit_max));
+    s["large_strain_exponent"] = value_or_null(exponent_in_window(c, options.fit_min, options.fit_max));
     s["pole_contact_exponent"] = value_or_null(pole_contact_exponent(c));
     s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
     s["contacts_at_max"] = c.samples.back().top_contacts;
@@ -143,47 +208,22 @@ void run_compress3d(const Parameters& p, RunContext& context)
     }
     s["delta_tilde"] = delta_tilde;
     s["F_tilde"] = force_tilde;
-    if (model == "spring_network") {
+    if (network) {
         s["network_springs"] = r.springs;
         s["coordination"] = 2.0 * r.springs / r.vertices;
     }
 }
 
+} // namespace
+
+void run_compress3d(const Parameters& p, RunContext& context)
+{
+    run_compress3d(compress3d_binding().read(p), context);
+}
+
 std::vector<ParameterSpec> compress3d_parameters()
 {
-    return {
-        ParameterSpec::choice("model", "tetrahedra", {"tetrahedra", "shell", "spring_network"},
-                              "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
-                              "eq. 9.2) or spring-network ball (Fig. 9.11a)"),
-        ParameterSpec::choice(
-            "mesh", "geodesic162",
-            {"icosahedron", "geodesic42", "geodesic162", "geodesic642", "geodesic2562"},
-            "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642, 2562; paper's shell: 162)"),
-        ParameterSpec::real("E", 1.0, "k_c/sigma", "tetrahedra: Young's modulus of each tetrahedron")
-            .positive(),
-        ParameterSpec::real("nu", 0.3, "1", "tetrahedra: Poisson ratio").at_least(0.0).below(0.5),
-        ParameterSpec::real("kv", 1e-3, "k_c/sigma^4", "shell: volume stiffness k_v of eq. (9.2)").positive(),
-        ParameterSpec::real("ka", 1.0, "k_c/sigma^2", "shell: face-area stiffness k_a of eq. (9.2)")
-            .positive(),
-        ParameterSpec::real("kb", 1.0, "k_c sigma^2", "shell: bending stiffness k_b of eq. (9.2)").positive(),
-        ParameterSpec::integer("network_nodes", 2000, "1", "network: nodes (paper: 3765)").at_least(50),
-        ParameterSpec::real("cutoff", 1.83, "node spacing", "network: springs join nodes closer than this")
-            .positive(),
-        ParameterSpec::seed("seed", 1, "network: seed of the interior node placement"),
-        ParameterSpec::real("kp", 4.0, "k_c", "plate-vertex spring k_p (paper: 4 k_c)").positive(),
-        ParameterSpec::integer("steps", 24, "1", "compression steps, log-spaced").at_least(3),
-        ParameterSpec::real("delta_min", 1e-3, "D", "smallest compression delta/D").positive(),
-        ParameterSpec::real("delta_max", 0.2, "D", "largest compression delta/D").positive().below(0.5),
-        ParameterSpec::real("small_fit_max", 3e-3, "D",
-                            "small_strain_exponent: fit over delta/D from delta_min up to this")
-            .positive(),
-        ParameterSpec::real("fit_min", 0.05, "D", "large_strain_exponent: fit over delta/D from this ...")
-            .positive(),
-        ParameterSpec::real("fit_max", 0.2, "D", "... up to this").positive(),
-        ParameterSpec::real("force_tolerance", 1e-8, "k_c sigma",
-                            "FIRE stops at this rms force per degree of freedom")
-            .positive(),
-    };
+    return compress3d_binding().specs();
 }
 
 } // namespace softgrain::dpm
