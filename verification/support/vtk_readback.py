@@ -23,7 +23,18 @@ run's tables and summary:
   - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
     vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
     the box and phi;
-  - DPM 2D contacts (jam, slump): per particle, the contact forces sum to its vertices' forces; jam's contact
+  - 2D DPM scenes with a frame per state, mode or packing: dpm.modes (a floppy particle and a disk packing:
+    each mode's unit norm, orthogonality to the rigid motions and to the other modes, lambda against
+    eigenvalues.dat, the first against lowest_mode.dat), dpm.crystal_modes (the mode against mode.dat and
+    H u = lambda u with the pair Hessian recomputed from the frame), dpm.shear_friction (the contact line's
+    forces against shear.dat's F_n and |F_t|, x_bm/D_beta from the anchors, mu's path), dpm.packing_fraction
+    (phi of eqs. (9.18)-(9.22) recomputed from the polygons against the summary, contacts against eq. (9.4)),
+    dpm.rearrangement (phi from the disks, the contact networks from the overlaps against the summary's
+    counts, the irreversible step marked), dpm.compress_box (the walls' strain and the wall pressures from the
+    vertex forces at the walls against pressure.dat), dpm.boundary_jam (disk-disk contacts from the centres
+    against packings.dat) and dpm.shear_modulus (the Lees-Edwards parallelogram's shear against the strain,
+    centres inside it, phi and P of packing 0 and G from the frames' stresses against modulus.dat);
+  - DPM 2D contacts (jam, slump, and the scenes above): per particle, the contact forces sum to its vertices' forces; jam's contact
     pairs and forces equal eq. (9.4) recomputed from the frame's vertices;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
