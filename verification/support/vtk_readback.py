@@ -753,6 +753,13 @@ def check_rearrangement(softgrain, work):
         last, before = series[-1]["particles"][1], series[-2]["particles"][1]
         check(close(field(last, "phi"), s["phi_after"], 1e-15) and close(field(before, "phi"), s["phi_before"], 1e-15)
               and close(field(last, "pressure"), s["pressure_after"], 1e-15), "rearrangement: phi and P")
+    # Every 10th step, and always the rearrangement's.
+    run(softgrain, work / "rearrangement-every", "dpm.rearrangement", "--vtk", "--vtk-every", "10", "--set",
+        "particles=12", "dphi=1e-3")
+    thinned = read_series(work / "rearrangement-every" / "dpm.rearrangement", "dpm.rearrangement")
+    expected = [k for k in range(s["step"] + 1) if k % 10 == 0 or k == s["step"]]
+    check([frame["particles"][0] for frame in thinned] == expected,
+          f"rearrangement --vtk-every 10: steps {[frame['particles'][0] for frame in thinned]}, expected {expected}")
     print(f"dpm.rearrangement: {len(series)} frames, rearrangement at step {s['step']}")
 
 
