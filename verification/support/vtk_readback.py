@@ -34,8 +34,9 @@ run's tables and summary:
     vertex forces at the walls against pressure.dat), dpm.boundary_jam (disk-disk contacts from the centres
     against packings.dat) and dpm.shear_modulus (the Lees-Edwards parallelogram's shear against the strain,
     centres inside it, phi and P of packing 0 and G from the frames' stresses against modulus.dat);
-  - DPM 2D contacts (jam, slump, and the scenes above): per particle, the contact forces sum to its vertices' forces; jam's contact
-    pairs and forces equal eq. (9.4) recomputed from the frame's vertices;
+  - DPM 2D contacts (jam, slump, and the scenes above): per particle, the contact forces sum to its
+    vertices' forces; the contact pairs and forces of jam and packing_fraction equal eq. (9.4) recomputed
+    from the frame's vertices;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -832,11 +833,12 @@ def check_boundary_jam(softgrain, work):
         # Disk-disk contacts: centres closer than the disk diameter d = 1.
         geometric = sum(math.dist(disks[i][0], disks[j][0]) < disks[i][1] + disks[j][1]
                         for i in range(4) for j in range(i + 1, 4))
-        mine, other = cell_values(frame["contacts"][1], "particle") or [], cell_values(frame["contacts"][1], "other_particle") or []
+        contacts = frame["contacts"][1]
+        mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
         lines = sum(1 for a, b in zip(mine, other) if a < 4 and b < 4)
         check(geometric == lines == row["contacts"] == field(data, "disk_contacts"),
               f"{label}: {geometric} disk contacts from the centres, {lines} lines, table {row['contacts']}")
-        check_contact_balance(data, frame["contacts"][1], label)
+        check_contact_balance(data, contacts, label)
     print("dpm.boundary_jam: disk contacts of the frames match packings.dat")
 
 
