@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "dpm/boundary_jam.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,19 @@ void run_boundary_jam(const Parameters& p, RunContext& context)
             packings.row({double(k), double(r.disk_contacts), r.theta, r.energy, A0});
             thetas[r.disk_contacts].push_back(r.theta);
             all_thetas.push_back(r.theta);
+            // A ParaView frame per packing (the trial k as the time value): the disks (vertex cells) and the
+            // ring (a polygon), the contacts (disk-disk and disk-ring), and the packing's description.
+            if (auto* series = context.vtk(); series && series->next()) {
+                std::vector<vtk::Part> parts{{"particles", dpm_particles(r.system, r.x)},
+                                             {"contacts", dpm_contacts(r.system, r.x)}};
+                for (auto& part : parts) {
+                    part.data.field("disk_contacts", r.disk_contacts);
+                    part.data.field("theta", r.theta);
+                    part.data.field("energy", r.energy);
+                    part.data.field("A0", A0);
+                }
+                series->write(k, parts);
+            }
             for (std::size_t m = 0; m < r.system.particles.size(); ++m) {
                 const Particle& q = r.system.particles[m];
                 for (int v = 0; v <= (q.count > 1 ? q.count : 0); ++v) {

@@ -4,6 +4,7 @@
 
 #include "core/output.hpp"
 #include "dpm/box_compress.hpp"
+#include "dpm/vtk_frames.hpp"
 
 namespace softgrain::dpm {
 
@@ -33,6 +34,24 @@ void run_compress_box(const Parameters& p, RunContext& context)
     for (const BoxState& state : r.states)
         pressures.row({1 - state.height / h0, state.pressure_x, state.pressure_y,
                        largest_interparticle_overlap(s, state.x) / r.diameter_small});
+
+    // ParaView frames, one per state (P0 reached, then each uniaxial step), the strain 1 - h/h0 as the time
+    // value: the particles, the walls (the box [0, w] x [0, h]) and the contacts, with the strain and the wall
+    // pressures [k_a a0] as field data.
+    if (auto* series = context.vtk())
+        for (const BoxState& state : r.states) {
+            if (!series->next()) continue;
+            const double strain = 1 - state.height / h0;
+            std::vector<vtk::Part> parts{{"particles", dpm_particles(s, state.x)},
+                                         {"walls", box_outline({state.width, state.height})},
+                                         {"contacts", dpm_contacts(s, state.x)}};
+            for (auto& part : parts) {
+                part.data.field("strain", strain);
+                part.data.field("pressure_x", state.pressure_x);
+                part.data.field("pressure_y", state.pressure_y);
+            }
+            series->write(strain, parts);
+        }
 
     // Snapshots before (frame 1) and after (frame 2) the uniaxial compression: disks as circles, deformable
     // particles as edges (vectors) and vertex disks; the box as four edges with particle = -1.

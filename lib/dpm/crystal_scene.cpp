@@ -6,6 +6,7 @@
 #include "core/output.hpp"
 #include "dpm/crystal.hpp"
 #include "dpm/modes.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +49,20 @@ void run_crystal_modes(const Parameters& p, RunContext& context)
                                              {"uy", "1", "eigenvector component"}});
     for (Eigen::Index i = 0; i < u.size() / 2; ++i)
         field.row({x(2 * i), x(2 * i + 1), u(2 * i), u(2 * i + 1)});
+    // One ParaView frame (time 0): the disks (vertex cells, the point order of x) with the drawn mode as the
+    // point vector `mode` (unit norm over all disks; Warp By Vector animates it), the box and the contacts.
+    if (auto* series = context.vtk(); series && series->next()) {
+        vtk::PolyData disks = dpm_particles(system, x);
+        disks.point_vectors("mode", vertex_vectors(u));
+        std::vector<vtk::Part> parts{{"particles", std::move(disks)},
+                                     {"box", box_outline(*system.box)},
+                                     {"contacts", dpm_contacts(system, x)}};
+        for (auto& part : parts) {
+            part.data.field("mode_index", static_cast<double>(p.integer("mode")));
+            part.data.field("lambda_mode", modes.eigenvalues(chosen));
+        }
+        series->write(0.0, parts);
+    }
 
     auto& s = context.summary();
     s["spectrum_error_max"] = error;

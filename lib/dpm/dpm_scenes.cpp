@@ -85,14 +85,16 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM eq. (9.28): eigenvalues of the dynamical matrix of a floppy / shell / surface-tension "
               "particle, zero modes, Delta U along each mode (Figs. 9.14a, c)",
               dpm::modes_parameters(), dpm::run_modes}
-            .needing(modes_memory));
+            .needing(modes_memory)
+            .with_vtk());
     registry.add(Scene{"dpm.shear_friction",
                        "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
                        "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
                        dpm::shear_friction_parameters(), dpm::run_shear_friction}
                      .needing([](const Parameters& p) {
                          return dpm::dpm_vertex_memory(2 * integer(p, "nodes"), "vertices (2 x nodes)");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(
         Scene{"dpm.packing_fraction",
               "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, analytic "
@@ -101,7 +103,8 @@ void register_dpm_scenes(SceneRegistry& registry)
             .needing([](const Parameters& p) {
                 return dpm::dpm_vertex_memory(integer(p, "particles") * integer(p, "nodes"),
                                               "vertices (particles x nodes)");
-            }));
+            })
+            .with_vtk());
     registry.add(
         Scene{"dpm.crystal_modes",
               "DPM eq. (9.28), Fig. 9.5(a): modes of a compressed triangular soft-disk crystal against "
@@ -110,7 +113,8 @@ void register_dpm_scenes(SceneRegistry& registry)
             .needing([](const Parameters& p) {
                 // rows x rows disks: the dynamical matrix of 2 rows^2 rows and its eigenvectors.
                 return dense_matrix_memory(2 * integer(p, "rows") * integer(p, "rows"), 2, "2 x rows^2");
-            }));
+            })
+            .with_vtk());
     registry.add(
         Scene{"dpm.jam",
               "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression + "
@@ -130,7 +134,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        dpm::rearrangement_parameters(), dpm::run_rearrangement}
                      .needing([](const Parameters& p) {
                          return dpm::dpm_vertex_memory(integer(p, "particles"), "disks (particles)");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(
         Scene{"dpm.compress2d",
               "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two plates, "
@@ -169,7 +174,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a "
                        "box with repulsive walls: snapshots, overlaps, facets",
                        dpm::compress_box_parameters(), dpm::run_compress_box}
-                     .needing(bidisperse_memory));
+                     .needing(bidisperse_memory)
+                     .with_vtk());
     registry.add(Scene{"dpm.boundary_jam",
                        "DPM Fig. 9.18(a-e): jammed packings of 4 disks inside a floppy deformable boundary, "
                        "distinct packings by contacts and parallelogram angle",
@@ -178,7 +184,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                          // The boundary's dense Hessian (4 disks beside it).
                          return dense_matrix_memory(2 * integer(p, "boundary_nodes") + 12, 1,
                                                     "2 x boundary_nodes + 12");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(Scene{"dpm.shape3d",
                        "DPM sec. 9.3.1: closed triangulated meshes (Platonic solids, geodesic icosahedra), "
                        "Euler counts and the 3D shape parameter A^3D",
@@ -198,7 +205,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                          // The Newton polish at each pressure uses the dense Hessian of the packing.
                          return dense_matrix_memory(2 * bidisperse_vertices(p), 1,
                                                     std::string("2 x ") + bidisperse_basis(p));
-                     }));
+                     })
+                     .with_vtk());
     registry.add(Scene{"dpm.shear_modulus3d",
                        "DPM sec. 9.4.3: shear modulus G of jammed 3D packings of floppy, shell and "
                        "surface-tension particles from Lees-Edwards strain steps against pressure, fitted "

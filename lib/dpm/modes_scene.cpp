@@ -10,6 +10,7 @@
 #include "dpm/single_particle.hpp"
 #include "dpm/sparse_modes.hpp"
 #include "dpm/stress.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +95,32 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
             s[std::string(prefix) + part] = nullptr;
     if (quartic_lowest >= 0) write_field(0, quartic_lowest, "quartic");
     if (first_positive < modes.eigenvalues.size()) write_field(1, modes.eigenvalues.size() - 1, "quadratic");
+}
+
+// ParaView frames of the lowest non-zero modes (at most 8, from index first_positive; --vtk-every thins
+// them), one frame per mode with the mode's index k of eigenvalues.dat as the time value: the relaxed particle
+// or packing (with its box and contacts) and the unit eigenvector as the point vector `mode`, so that Warp By
+// Vector on `mode` shows each mode as the time slider steps through them. Field data: mode_index k and lambda
+// [unit], as in eigenvalues.dat.
+void write_mode_frames(const DpmSystem& system, const Eigen::VectorXd& x, const ModeSpectrum& modes,
+                       int first_positive, double unit, vtk::Series& series)
+{
+    const Eigen::Index last = std::min<Eigen::Index>(modes.eigenvalues.size(), first_positive + 8);
+    for (Eigen::Index m = first_positive; m < last; ++m) {
+        if (!series.next()) continue;
+        vtk::PolyData particles = dpm_particles(system, x);
+        particles.point_vectors("mode", vertex_vectors(modes.eigenvectors.col(m)));
+        std::vector<vtk::Part> parts{{"particles", std::move(particles)}};
+        if (system.box) {
+            parts.push_back({"box", box_outline(*system.box)});
+            parts.push_back({"contacts", dpm_contacts(system, x)});
+        }
+        for (auto& part : parts) {
+            part.data.field("mode_index", static_cast<double>(m + 1));
+            part.data.field("lambda", modes.eigenvalues(m) / unit);
+        }
+        series.write(static_cast<double>(m + 1), parts);
+    }
 }
 
 } // namespace
@@ -213,6 +240,7 @@ WrittenSpectrum write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x
             field.row({x(2 * i), x(2 * i + 1), u(2 * i), u(2 * i + 1)});
         s["participation_ratio_lowest"] = participation_ratio(u);
     }
+    if (auto* series = context.vtk()) write_mode_frames(system, x, modes, positive, unit, *series);
     s["zero_modes"] = counts.zero;
     s["negative_modes"] = counts.negative;
     s["zero_threshold_used"] = threshold;

@@ -5,6 +5,7 @@
 #include "core/output.hpp"
 #include "dpm/packing.hpp"
 #include "dpm/packing_fraction.hpp"
+#include "dpm/vtk_frames.hpp"
 
 namespace softgrain::dpm {
 
@@ -41,6 +42,16 @@ void run_packing_fraction(const Parameters& p, RunContext& context)
     }
     s["box"] = packing.system.box->x();
     s["compression_steps"] = packing.compression_steps;
+    // One ParaView frame (time 0) of the jammed packing: the particles, the box and the contacts, with the
+    // analytic phi of eq. (9.22) as field data.
+    if (auto* series = context.vtk(); series && series->next()) {
+        std::vector<vtk::Part> parts{{"particles", dpm_particles(packing.system, packing.x)},
+                                     {"box", box_outline(*packing.system.box)},
+                                     {"contacts", dpm_contacts(packing.system, packing.x)}};
+        for (auto& part : parts)
+            part.data.field("phi", a.phi);
+        series->write(0.0, parts);
+    }
 
     auto& vertices = context.table(
         "vertices.dat", {{"particle", "1", "particle index"},

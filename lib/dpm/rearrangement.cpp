@@ -45,7 +45,7 @@ NetworkChange compare_networks(const ContactNetwork& before, const ContactNetwor
     return change;
 }
 
-RearrangementResult find_rearrangement(const RearrangementOptions& o)
+RearrangementResult find_rearrangement(const RearrangementOptions& o, const RearrangementObserver& observe)
 {
     if (o.jam.model != "smooth_disk")
         throw InputError("model = " + o.jam.model + ": the rearrangement search is for smooth_disk packings");
@@ -81,6 +81,7 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o)
     PackingState current = state_of(jammed.states.front().x);
     out.phi_c = current.phi;
     out.previous = current;
+    if (observe) observe(0, s, current, false, false);
     for (int step = 1; step <= o.max_steps; ++step) {
         Eigen::VectorXd x = current.x;
         compress_by(x, current.phi, o.dphi);
@@ -93,6 +94,7 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o)
             PackingState reversed = state_of(back);
             *s.box = next.box;
             if (reversed.contacts != current.contacts) {
+                if (observe) observe(step, s, next, true, true);
                 out.found = true;
                 out.step = step;
                 out.before = current;
@@ -102,6 +104,7 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o)
             }
             ++out.elastic_changes;
         }
+        if (observe) observe(step, s, next, next.contacts != current.contacts, false);
         out.previous = current;
         current = std::move(next);
     }

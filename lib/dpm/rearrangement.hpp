@@ -14,6 +14,7 @@
 
 #include "dpm/jam.hpp"
 
+#include <functional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -66,6 +67,13 @@ struct RearrangementResult
     FireOptions fire; // the FIRE settings used (dpm.jam's)
 };
 
-RearrangementResult find_rearrangement(const RearrangementOptions& options);
+// Called with the onset (step 0) and after each compression step, once the step is classified: the step, the
+// system (its box that of `state`), the relaxed state, whether its contact network differs from the previous
+// step's and whether that change is irreversible (the rearrangement: the last call).
+using RearrangementObserver = std::function<void(int step, const DpmSystem& system, const PackingState& state,
+                                                 bool network_changed, bool irreversible)>;
+
+RearrangementResult find_rearrangement(const RearrangementOptions& options,
+                                       const RearrangementObserver& observe = {});
 
 } // namespace softgrain::dpm

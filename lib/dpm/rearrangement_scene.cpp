@@ -5,6 +5,7 @@
 
 #include "core/output.hpp"
 #include "dpm/rearrangement.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <cmath>
 
@@ -37,6 +38,33 @@ void write_contacts(Table& table, const PackingState& state, int which, const Co
     }
 }
 
+// ParaView frames: the onset (step 0) and each compression step (--vtk-every N: every N-th, and always the
+// rearrangement), the step as the time value: the disks (vertex cells), the box and the contacts (every
+// touching pair; the scene's network counts those with overlap above contact_overlap_threshold). Field data:
+// step, phi, pressure [k_c], network_contacts (the network's size), network_changed (1 if it differs from
+// the previous step's) and irreversible (1 on the step of the rearrangement, the last frame).
+RearrangementObserver frame_writer(vtk::Series& series)
+{
+    return [&series](int step, const DpmSystem& system, const PackingState& state, bool network_changed,
+                     bool irreversible) {
+        if (!series.next() && !irreversible) return;
+        DpmSystem at_state = system;
+        at_state.box = state.box;
+        std::vector<vtk::Part> parts{{"particles", dpm_particles(at_state, state.x)},
+                                     {"box", box_outline(state.box)},
+                                     {"contacts", dpm_contacts(at_state, state.x)}};
+        for (auto& part : parts) {
+            part.data.field("step", step);
+            part.data.field("phi", state.phi);
+            part.data.field("pressure", state.pressure);
+            part.data.field("network_contacts", static_cast<double>(state.contacts.size()));
+            part.data.field("network_changed", network_changed ? 1.0 : 0.0);
+            part.data.field("irreversible", irreversible ? 1.0 : 0.0);
+        }
+        series.write(step, parts);
+    };
+}
+
 } // namespace
 
 void run_rearrangement(const Parameters& p, RunContext& context)
@@ -49,7 +77,8 @@ void run_rearrangement(const Parameters& p, RunContext& context)
     o.dphi = p.real("dphi");
     o.max_steps = static_cast<int>(p.integer("max_steps"));
     context.record_seed(o.jam.seed);
-    const RearrangementResult r = find_rearrangement(o);
+    const RearrangementResult r =
+        context.vtk() ? find_rearrangement(o, frame_writer(*context.vtk())) : find_rearrangement(o);
     context.count_steps(r.fire_iterations);
     auto& s = context.summary();
     s["phi_c"] = r.phi_c;

@@ -37,7 +37,7 @@ ContactForce contact_force_on_mu(const DpmSystem& system, const Eigen::VectorXd&
     return {force.dot(normal), force.dot(tangent), energy};
 }
 
-ShearTestResult simple_shear_test(const ShearTestOptions& o)
+ShearTestResult simple_shear_test(const ShearTestOptions& o, const ShearStepObserver& observe)
 {
     const double pi = std::numbers::pi, sigma = 1.0;
     const int n = o.nodes;
@@ -135,8 +135,9 @@ ShearTestResult simple_shear_test(const ShearTestOptions& o)
         sample.energy = relaxed.energy;
         sample.iterations = relaxed.iterations;
         result.configurations.push_back({sample.x_over_d, x});
+        if (sample.normal_force > 0) sample.mu_eff = sample.tangential_force / sample.normal_force;
+        if (observe) observe(system, x, sample);
         if (sample.normal_force <= 0) continue; // not in contact
-        sample.mu_eff = sample.tangential_force / sample.normal_force;
         if (result.samples.empty() || sample.mu_eff > result.mu_eff_max) {
             result.mu_eff_max = sample.mu_eff;
             result.x_at_max = sample.x_over_d;

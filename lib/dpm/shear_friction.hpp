@@ -17,6 +17,7 @@
 
 #include "dpm/system.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -73,6 +74,11 @@ ContactForce contact_force_on_mu(const DpmSystem& system, const Eigen::VectorXd&
 // Eq. (9.13): maximum friction of rough circular particles, ([1/(C sin(pi/N))]^2 - 1)^(-1/2).
 double rough_friction_maximum(double C, int nodes);
 
-ShearTestResult simple_shear_test(const ShearTestOptions& options);
+// Called after each relaxed shear step with the system (its anchors where that step put them), the relaxed
+// coordinates and the step's sample (mu_eff is 0 where F_n <= 0: not in contact, no row of shear.dat).
+using ShearStepObserver =
+    std::function<void(const DpmSystem& system, const Eigen::VectorXd& x, const ShearSample& sample)>;
+
+ShearTestResult simple_shear_test(const ShearTestOptions& options, const ShearStepObserver& observe = {});
 
 } // namespace softgrain::dpm

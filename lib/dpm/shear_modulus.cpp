@@ -10,7 +10,7 @@
 namespace softgrain::dpm {
 
 ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance)
+                                 double force_tolerance, const ShearStepObserver& observe)
 {
     ShearModulusResult out;
     std::vector<double> strain;
@@ -29,13 +29,24 @@ ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorX
         minimise(step);
         strain.push_back(step * dgamma);
         out.shear_stress.push_back(packing.stress(x));
+        if (observe) observe(step, x, out.shear_stress.back());
     }
     out.modulus = fit_line(strain, out.shear_stress).value().slope; // steps >= 1: two points at least
     return out;
 }
 
+// The observer of a system's shear: the system as sheared so far, or none.
+template <class System>
+ShearStepObserver observing(const System& system, const ShearedSystemObserver<System>& observe)
+{
+    if (!observe) return {};
+    return [&system, &observe](int step, const Eigen::VectorXd& y, double stress) {
+        observe(step, system, y, stress);
+    };
+}
+
 ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance)
+                                 double force_tolerance, const ShearedSystemObserver<DpmSystem>& observe)
 {
     const ShearablePacking packing{
         [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
@@ -46,11 +57,11 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
             const Eigen::Matrix2d sigma = stress_tensor(system, y);
             return -0.5 * (sigma(0, 1) + sigma(1, 0)); // symmetric at equilibrium
         }};
-    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance);
+    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance, observing(system, observe));
 }
 
 ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance)
+                                 double force_tolerance, const ShearedSystemObserver<DpmSystem3d>& observe)
 {
     const ShearablePacking packing{
         [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
@@ -61,7 +72,7 @@ ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double d
             const Eigen::Matrix3d sigma = stress_tensor3d(system, y);
             return -0.5 * (sigma(0, 1) + sigma(1, 0));
         }};
-    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance);
+    return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance, observing(system, observe));
 }
 
 } // namespace softgrain::dpm

@@ -34,15 +34,24 @@ struct ShearablePacking
     std::function<double(const Eigen::VectorXd&)> stress; // Sigma~ = -Sigma_xy (symmetric part)
 };
 
+// Called after each minimisation with the step (0: the polished, unsheared packing), the minimum and Sigma~.
+using ShearStepObserver = std::function<void(int step, const Eigen::VectorXd& x, double shear_stress)>;
+// The same for a system, which carries the box and its Lees-Edwards strain step x dgamma.
+template <class System>
+using ShearedSystemObserver =
+    std::function<void(int step, const System& system, const Eigen::VectorXd& x, double shear_stress)>;
+
 // Applies `steps` strain steps of `dgamma` from x (which must be in equilibrium: it is Newton-polished first,
 // to `force_tolerance`). NumericalError if Newton cannot reach the tolerance after a step.
 ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance);
+                                 double force_tolerance, const ShearStepObserver& observe = {});
 
 // The same on a copy of a 2D or a 3D system (rough or smooth contacts, any shape model).
 ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance);
+                                 double force_tolerance,
+                                 const ShearedSystemObserver<DpmSystem>& observe = {});
 ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance);
+                                 double force_tolerance,
+                                 const ShearedSystemObserver<DpmSystem3d>& observe = {});
 
 } // namespace softgrain::dpm

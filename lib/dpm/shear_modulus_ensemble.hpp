@@ -30,18 +30,29 @@ struct ModulusMember
 // A member travels between MPI ranks as JSON (core/ensemble.hpp).
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, fire_iterations, force_max)
 
+// Called after each minimisation of the shear at each state: the state's index, then as ShearedSystemObserver.
+template <class System>
+using StateShearObserver = std::function<void(std::size_t state, int step, const System& system,
+                                              const Eigen::VectorXd& x, double shear_stress)>;
+
 // G at every state of a jamming run; a state has x, box, pressure and phi (JamState, Jam3dState);
 // pressure_unit: the model's pressure unit in the system's stress unit; force_tolerance in the model's
 // pressure unit (times length), as the scenes take it.
 template <class System, class States>
 ModulusMember moduli_at_states(System system, const States& states, double pressure_unit, double dgamma,
-                               int steps, double force_tolerance)
+                               int steps, double force_tolerance,
+                               const StateShearObserver<System>& observe = {})
 {
     ModulusMember m;
-    for (const auto& state : states) {
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        const auto& state = states[k];
         *system.box = state.box;
+        ShearedSystemObserver<System> at_state;
+        if (observe)
+            at_state = [&observe, k](int step, const System& sheared, const Eigen::VectorXd& x,
+                                     double stress) { observe(k, step, sheared, x, stress); };
         const ShearModulusResult g =
-            shear_modulus(system, state.x, dgamma, steps, force_tolerance * pressure_unit);
+            shear_modulus(system, state.x, dgamma, steps, force_tolerance * pressure_unit, at_state);
         m.pressure.push_back(state.pressure);
         m.phi.push_back(state.phi);
         m.modulus.push_back(g.modulus / pressure_unit);

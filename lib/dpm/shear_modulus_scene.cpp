@@ -10,8 +10,40 @@
 #include "dpm/jam.hpp"
 #include "dpm/jam_scene.hpp"
 #include "dpm/shear_modulus_ensemble.hpp"
+#include "dpm/vtk_frames.hpp"
 
 namespace softgrain::dpm {
+
+namespace {
+
+// ParaView frames of the first packing (seed `seed`) only: at every pressure state, each strain step (0: the
+// polished, unsheared packing), the running count (steps + 1) x state + step as the time value. The particles
+// whole with their centres in the sheared box, the box as the parallelogram of its Lees-Edwards strain, and
+// the contacts; field data state, step, gamma (the box's strain), pressure and phi of the state and
+// shear_stress Sigma~ = -Sigma_xy [pressure unit]. Member 0 of the ensemble always runs on the first rank
+// (core/ensemble.hpp: member k on rank k mod R), the one that writes, and it alone calls this.
+StateShearObserver<DpmSystem> frame_writer(vtk::Series& series, const std::vector<JamState>& states,
+                                           int steps, double pressure_unit)
+{
+    return [&series, &states, steps, pressure_unit](std::size_t state, int step, const DpmSystem& system,
+                                                    const Eigen::VectorXd& x, double shear_stress) {
+        if (!series.next()) return;
+        std::vector<vtk::Part> parts{{"particles", dpm_particles(system, x)},
+                                     {"box", box_outline(*system.box, system.lees_edwards_strain)},
+                                     {"contacts", dpm_contacts(system, x)}};
+        for (auto& part : parts) {
+            part.data.field("state", static_cast<double>(state));
+            part.data.field("step", step);
+            part.data.field("gamma", system.lees_edwards_strain);
+            part.data.field("pressure", states[state].pressure);
+            part.data.field("phi", states[state].phi);
+            part.data.field("shear_stress", shear_stress / pressure_unit);
+        }
+        series.write(static_cast<double>((steps + 1) * static_cast<int>(state) + step), parts);
+    };
+}
+
+} // namespace
 
 void run_shear_modulus(const Parameters& p, RunContext& context)
 {
@@ -32,7 +64,11 @@ void run_shear_modulus(const Parameters& p, RunContext& context)
         JamOptions mine = o;
         mine.seed = first_seed + static_cast<std::uint64_t>(k);
         const JamResult r = jam(mine);
-        ModulusMember m = moduli_at_states(r.system, r.states, r.pressure_unit, dgamma, steps, tolerance);
+        const StateShearObserver<DpmSystem> frames =
+            k == 0 && context.vtk() ? frame_writer(*context.vtk(), r.states, steps, r.pressure_unit)
+                                    : StateShearObserver<DpmSystem>{};
+        ModulusMember m =
+            moduli_at_states(r.system, r.states, r.pressure_unit, dgamma, steps, tolerance, frames);
         m.fire_iterations = r.fire_iterations;
         return m;
     });

@@ -6,6 +6,7 @@
 #include "dpm/frozen_contact.hpp"
 #include "dpm/preferred_shape.hpp"
 #include "dpm/shear_friction.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,59 @@ void write_frames(const Parameters& p, const ShearTestResult& r, RunContext& con
     }
 }
 
+// The anchors' rest positions (the constraint springs that hold beta and drag mu, section 9.3.3) as vertex
+// cells, with the anchored vertex as cell data `vertex`.
+vtk::PolyData anchor_points(const DpmSystem& system)
+{
+    vtk::PolyData data;
+    std::vector<std::int64_t> vertices;
+    for (const Anchor& anchor : system.anchors) {
+        data.add_vertex(data.add_point(anchor.position));
+        vertices.push_back(anchor.vertex);
+    }
+    data.cell_ids("vertex", std::move(vertices));
+    return data;
+}
+
+// ParaView frames, one per shear step (--vtk-every N: every N-th), x_bm / D_beta as the time value: the two
+// particles, their contact, the anchors and the shear path (mu's centre, its vertex mean, at every step so
+// far, as one polyline with x_over_D per point). Field data: x_over_D, F_n, F_t [k_c sigma] and mu_eff (NaN
+// out of contact).
+class ShearFrames
+{
+  public:
+    explicit ShearFrames(vtk::Series& series) : series_(series) {}
+    void operator()(const DpmSystem& system, const Eigen::VectorXd& x, const ShearSample& sample)
+    {
+        const Particle& mu = system.particles[1];
+        path_.push_back(x.segment(2 * mu.first, 2 * mu.count).reshaped(2, mu.count).rowwise().mean());
+        path_x_over_d_.push_back(sample.x_over_d);
+        if (!series_.next()) return;
+        vtk::PolyData path;
+        std::vector<std::int64_t> line;
+        for (const Eigen::Vector2d& centre : path_)
+            line.push_back(path.add_point(centre));
+        path.add_line(line);
+        path.point_scalars("x_over_D", path_x_over_d_);
+        std::vector<vtk::Part> parts{{"particles", dpm_particles(system, x)},
+                                     {"contacts", dpm_contacts(system, x)},
+                                     {"anchors", anchor_points(system)},
+                                     {"path", std::move(path)}};
+        for (auto& part : parts) {
+            part.data.field("x_over_D", sample.x_over_d);
+            part.data.field("F_n", sample.normal_force);
+            part.data.field("F_t", sample.tangential_force);
+            part.data.field("mu_eff", sample.normal_force > 0 ? sample.mu_eff : NAN);
+        }
+        series_.write(sample.x_over_d, parts);
+    }
+
+  private:
+    vtk::Series& series_;
+    std::vector<Eigen::Vector2d> path_;
+    std::vector<double> path_x_over_d_;
+};
+
 } // namespace
 
 void run_shear_friction(const Parameters& p, RunContext& context)
@@ -75,7 +129,8 @@ void run_shear_friction(const Parameters& p, RunContext& context)
     o.x_end = p.real("x_end");
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     if (o.kb == 0) context.record_seed(o.seed);
-    const ShearTestResult r = simple_shear_test(o);
+    const ShearTestResult r =
+        context.vtk() ? simple_shear_test(o, ShearFrames(*context.vtk())) : simple_shear_test(o);
     context.count_steps(r.iterations);
 
     auto& table = context.table("shear.dat", {{"x_over_D", "1", "x_bm / D_beta (section 9.3.3)"},

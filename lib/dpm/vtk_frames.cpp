@@ -9,6 +9,22 @@
 
 namespace softgrain::dpm {
 
+namespace {
+
+// The shift by whole periods that moves point p into the drawn box: [0, L_x) x [0, L_y), or under a
+// Lees-Edwards strain gamma the parallelogram spanned by a = (L_x, 0) and b = (gamma L_y, L_y), the lattice
+// of the periodic images (the image above is shifted by gamma L_y); p = s a + t b. Zero without a box.
+Eigen::Vector2d shift_into_box(const DpmSystem& system, const Eigen::Vector2d& p)
+{
+    if (!system.box) return Eigen::Vector2d::Zero();
+    const Eigen::Vector2d& L = *system.box;
+    const double gamma = system.lees_edwards_strain;
+    const double t = std::floor(p.y() / L.y()), s = std::floor((p.x() - gamma * p.y()) / L.x());
+    return -s * Eigen::Vector2d(L.x(), 0) - t * Eigen::Vector2d(gamma * L.y(), L.y());
+}
+
+} // namespace
+
 vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     vtk::PolyData data;
@@ -21,9 +37,7 @@ vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x)
         Eigen::Vector2d centre = Eigen::Vector2d::Zero();
         for (int v = p.first; v < p.first + p.count; ++v)
             centre += x.segment<2>(2 * v) / p.count;
-        const Eigen::Vector2d shift = system.box
-                                          ? Eigen::Vector2d(wrap_into_box(centre, *system.box) - centre)
-                                          : Eigen::Vector2d::Zero();
+        const Eigen::Vector2d shift = shift_into_box(system, centre);
         std::vector<std::int64_t> cell;
         for (int v = p.first; v < p.first + p.count; ++v) {
             const Eigen::Vector2d r = x.segment<2>(2 * v) + shift;
@@ -46,6 +60,15 @@ vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x)
     data.cell_ids("particle_id", std::move(ids));
     data.cell_scalars("vertices", std::move(vertices));
     return data;
+}
+
+std::vector<double> vertex_vectors(const Eigen::VectorXd& u)
+{
+    std::vector<double> xyz;
+    xyz.reserve(static_cast<std::size_t>(3 * u.size() / 2));
+    for (Eigen::Index v = 0; v < u.size() / 2; ++v)
+        xyz.insert(xyz.end(), {u(2 * v), u(2 * v + 1), 0.0});
+    return xyz;
 }
 
 vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x)
@@ -86,8 +109,7 @@ vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x)
         for (int v = 0; v < pm.count; ++v)
             f -= gradient.segment<2>(2 * v);
         const Eigen::Vector2d n = d.normalized();
-        const Eigen::Vector2d wrap =
-            system.box ? Eigen::Vector2d(wrap_into_box(cm, *system.box) - cm) : Eigen::Vector2d::Zero();
+        const Eigen::Vector2d wrap = shift_into_box(system, cm);
         data.add_line({data.add_point(cm + wrap), data.add_point(cm + d + wrap)});
         normal_force.push_back(-f.dot(n));
         tangential_force.push_back((f - f.dot(n) * n).norm());
@@ -103,11 +125,13 @@ vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x)
     return data;
 }
 
-vtk::PolyData box_outline(const Eigen::Vector2d& box)
+vtk::PolyData box_outline(const Eigen::Vector2d& box, double lees_edwards_strain)
 {
     vtk::PolyData data;
+    const double top_shift = lees_edwards_strain * box.y();
     const std::int64_t a = data.add_point(0, 0), b = data.add_point(box.x(), 0),
-                       c = data.add_point(box.x(), box.y()), d = data.add_point(0, box.y());
+                       c = data.add_point(box.x() + top_shift, box.y()),
+                       d = data.add_point(top_shift, box.y());
     data.add_line({a, b, c, d, a});
     return data;
 }

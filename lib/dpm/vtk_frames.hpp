@@ -1,7 +1,8 @@
 // ParaView frames of 2D DPM scenes (`run --vtk`, core/vtk.hpp): a DpmSystem as VTK PolyData.
 //
 // Particles: polygons (one-vertex particles, the smooth disks, as vertex cells). In a periodic box each
-// particle is drawn whole, shifted by whole box sides so that its centre (vertex mean) lies in the box.
+// particle is drawn whole, shifted by whole box periods so that its centre (vertex mean) lies in the box (the
+// parallelogram of box_outline under a Lees-Edwards strain).
 // Point data: radius sigma/2 of the vertex disk [L], force = -dU/dx of the system's energy [E/L]. Cell data:
 // particle_id, area_ratio a/a0 (eq. (9.1); NaN for one-vertex particles and a0 = 0) and vertices N_mu.
 // Lengths in the scene's unit L (sigma of the small particles or the vertex diameter), z = 0.
@@ -25,6 +26,11 @@ namespace softgrain::dpm {
 
 vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x);
 
+// A field over the vertices of a 2D system, flat like its coordinates (u(2v), u(2v + 1) at vertex v), as
+// 3-vectors (z = 0) in the point order of dpm_particles (the vertex order), for PolyData::point_vectors: a
+// mode or a displacement that ParaView's Warp By Vector applies to the particles.
+std::vector<double> vertex_vectors(const Eigen::VectorXd& u);
+
 // The contacts between the particles of a 2D system, one line per touching particle pair (m < b) from the
 // centre (vertex mean) of m, as drawn by dpm_particles, to that of b's nearest image. The pair's force is
 // that of interaction_energy (rough or smooth) on the two particles alone: F, the sum over m's vertices of
@@ -33,8 +39,9 @@ vtk::PolyData dpm_particles(const DpmSystem& system, const Eigen::VectorXd& x);
 // do not point along the centre line), force F on m (3-vector), particle and other_particle. [E/L]
 vtk::PolyData dpm_contacts(const DpmSystem& system, const Eigen::VectorXd& x);
 
-// The periodic box [0, L_x] x [0, L_y] as one closed polyline.
-vtk::PolyData box_outline(const Eigen::Vector2d& box);
+// The box [0, L_x] x [0, L_y] (periodic, or walls) as one closed polyline; with a Lees-Edwards strain gamma
+// the parallelogram of the sheared periodic box, spanned by (L_x, 0) and (gamma L_y, L_y).
+vtk::PolyData box_outline(const Eigen::Vector2d& box, double lees_edwards_strain = 0);
 
 // Two horizontal plates (bottom at y_bottom, top at y_top) from x_min to x_max as polylines, cell data
 // plate_id 0 (bottom) and 1 (top).

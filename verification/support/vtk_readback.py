@@ -23,8 +23,20 @@ run's tables and summary:
   - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
     vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
     the box and phi;
-  - DPM 2D contacts (jam, slump): per particle, the contact forces sum to its vertices' forces; jam's contact
-    pairs and forces equal eq. (9.4) recomputed from the frame's vertices;
+  - 2D DPM scenes with a frame per state, mode or packing: dpm.modes (a floppy particle and a disk packing:
+    each mode's unit norm, orthogonality to the rigid motions and to the other modes, lambda against
+    eigenvalues.dat, the first against lowest_mode.dat), dpm.crystal_modes (the mode against mode.dat and
+    H u = lambda u with the pair Hessian recomputed from the frame), dpm.shear_friction (the contact line's
+    forces against shear.dat's F_n and |F_t|, x_bm/D_beta from the anchors, mu's path), dpm.packing_fraction
+    (phi of eqs. (9.18)-(9.22) recomputed from the polygons against the summary, contacts against eq. (9.4)),
+    dpm.rearrangement (phi from the disks, the contact networks from the overlaps against the summary's
+    counts, the irreversible step marked), dpm.compress_box (the walls' strain and the wall pressures from the
+    vertex forces at the walls against pressure.dat), dpm.boundary_jam (disk-disk contacts from the centres
+    against packings.dat) and dpm.shear_modulus (the Lees-Edwards parallelogram's shear against the strain,
+    centres inside it, phi and P of packing 0 and G from the frames' stresses against modulus.dat);
+  - DPM 2D contacts (jam, slump, and the scenes above): per particle, the contact forces sum to its
+    vertices' forces; the contact pairs and forces of jam and packing_fraction equal eq. (9.4) recomputed
+    from the frame's vertices;
   - spd.compaction stopped by kill -9 after a checkpoint and resumed with --resume --vtk: the same frames,
     time values and frame files, byte for byte, as the uninterrupted run.
 
@@ -465,6 +477,420 @@ def check_slump(softgrain, work):
     check(touching > 0, "slump: no contact line in any frame")
 
 
+def cell_points(data, c):
+    """The point ids of cell c."""
+    cell = data.GetCell(c)
+    return [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
+
+
+def box_sides(box):
+    """(L_x, L_y) of a box outline starting at the origin (its largest coordinates; unsheared)."""
+    return [max(box.GetPoint(i)[c] for i in range(box.GetNumberOfPoints())) for c in range(2)]
+
+
+def mode_checks(data, label, rigid_rotation=False):
+    """A `mode` point vector of unit norm, orthogonal to the rigid translations (and, for a free particle, to
+    the rotation about its centre): a non-zero mode of a translation-invariant energy (eq. 9.28) is orthogonal
+    to every zero mode. Returns the vector as a list of (ux, uy)."""
+    u = point_tuples(data, "mode")
+    if not check(u is not None and len(u) == data.GetNumberOfPoints(), f"{label}: no point vector `mode`"):
+        return []
+    # Round-off of a unit eigenvector of LAPACK / Eigen: n eps; 1e-12 leaves room for a few hundred dof.
+    check(abs(sum(a * a + b * b + c * c for a, b, c in u) - 1) <= 1e-12, f"{label}: |mode| != 1")
+    for i in range(2):
+        check(abs(sum(v[i] for v in u)) <= 1e-10, f"{label}: mode not orthogonal to the translation {i}: "
+              f"{sum(v[i] for v in u)}")
+    check(all(v[2] == 0 for v in u), f"{label}: mode with a z component")
+    if rigid_rotation:
+        n = data.GetNumberOfPoints()
+        c = [sum(data.GetPoint(i)[k] for i in range(n)) / n for k in range(2)]
+        torque = sum((data.GetPoint(i)[0] - c[0]) * u[i][1] - (data.GetPoint(i)[1] - c[1]) * u[i][0] for i in range(n))
+        check(abs(torque) <= 1e-10, f"{label}: mode not orthogonal to the rotation: {torque}")
+    return [v[:2] for v in u]
+
+
+def check_modes(softgrain, work):
+    """dpm.modes: a frame per lowest non-zero mode (at most 8) of a floppy particle and of a smooth-disk
+    packing; each mode against eigenvalues.dat and lowest_mode.dat, unit norm, orthogonal to the rigid motions
+    and to the other frames' modes."""
+    for name, options, single in (("modes", ["nodes=10"], True),
+                                  ("modes-packing", ["particles=6", "model=smooth_disk"], False)):
+        out = work / name
+        run(softgrain, out, "dpm.modes", "--vtk", "--set", *options)
+        result = out / "dpm.modes"
+        s = summary(result)
+        eigen = table(result / "eigenvalues.dat")
+        lowest = table(result / "lowest_mode.dat")
+        series = read_series(result, "dpm.modes")
+        first = s["zero_modes"] + s["negative_modes"]  # index (from 0) of the first non-zero mode
+        check(len(series) == min(8, len(eigen) - first) > 0,
+              f"{name}: {len(series)} frames for {len(eigen) - first} non-zero modes (at most 8)")
+        modes = []
+        for k, frame in enumerate(series):
+            t, data, _ = frame["particles"]
+            label = f"{name} frame {k}"
+            row = eigen[first + k]
+            check(t == row["k"] == field(data, "mode_index"), f"{label}: time {t}, mode index {row['k']}")
+            check(close(field(data, "lambda"), row["lambda"], 1e-10),
+                  f"{label}: lambda {field(data, 'lambda')} against eigenvalues.dat {row['lambda']}")
+            check(("box" in frame) == (not single) and ("contacts" in frame) == (not single),
+                  f"{label}: parts {sorted(frame)}")
+            modes.append(mode_checks(data, label, rigid_rotation=single))
+        # The first frame's mode is the lowest non-zero one of lowest_mode.dat (12 significant digits).
+        if modes and modes[0]:
+            check(len(lowest) == len(modes[0]) and all(
+                abs(a[0] - r["ux"]) <= 1e-11 and abs(a[1] - r["uy"]) <= 1e-11 for a, r in zip(modes[0], lowest)),
+                f"{name}: the first frame's mode differs from lowest_mode.dat")
+        for a in range(len(modes)):
+            for b in range(a):
+                dot = sum(p[0] * q[0] + p[1] * q[1] for p, q in zip(modes[a], modes[b]))
+                check(abs(dot) <= 1e-10, f"{name}: modes of frames {a} and {b} not orthogonal ({dot})")
+    print("dpm.modes: mode frames of a floppy particle and of a disk packing read back")
+
+
+def check_shear_friction(softgrain, work):
+    """dpm.shear_friction: a frame per shear step; the contact line's forces against shear.dat's F_n, F_t
+    (eqs. 9.11, 9.12, from another computation of the pair force), x_bm / D_beta from the anchors."""
+    out = work / "shear-friction"
+    run(softgrain, out, "dpm.shear_friction", "--vtk", "--set", "dx=0.1")
+    result = out / "dpm.shear_friction"
+    s = summary(result)
+    rows = table(result / "shear.dat")
+    series = read_series(result, "dpm.shear_friction")
+    check(len(series) == 15, f"shear_friction: {len(series)} frames, expected (0.7 + 0.7) / 0.1 + 1 = 15")
+    in_contact = 0
+    for k, frame in enumerate(series):
+        t, particles, _ = frame["particles"]
+        contacts, anchors, path = frame["contacts"][1], frame["anchors"][1], frame["path"][1]
+        label = f"shear_friction frame {k}"
+        check(particles.GetNumberOfPolys() == 2 and particles.GetNumberOfPoints() == 16, f"{label}: particles")
+        # x_bm / D_beta (shear_friction.hpp): mu's middle anchor (index 3) from the midpoint of beta's two.
+        a = [anchors.GetPoint(i) for i in range(anchors.GetNumberOfPoints())]
+        check(len(a) == 5 and close((a[3][0] - 0.5 * (a[0][0] + a[1][0])) / s["D_beta"], t, 1e-12),
+              f"{label}: anchors give x/D {(a[3][0] - 0.5 * (a[0][0] + a[1][0])) / s['D_beta']}, time {t}")
+        # The path: mu's centre at every step so far, the last one this frame's.
+        mu = cell_points(particles, 1)
+        centre = [sum(particles.GetPoint(i)[c] for i in mu) / len(mu) for c in range(2)]
+        check(path.GetNumberOfPoints() == k + 1 and math.dist(path.GetPoint(k)[:2], centre) <= 1e-12,
+              f"{label}: path of {path.GetNumberOfPoints()} points ending at {path.GetPoint(k)}, mu at {centre}")
+        row = next((r for r in rows if close(r["x_over_D"], t, 1e-9)), None)
+        normal = cell_values(contacts, "normal_force") or []
+        tangential = cell_values(contacts, "tangential_force") or []
+        if row is None:
+            check(all(n <= 0 for n in normal), f"{label}: a repulsive contact {normal} where shear.dat has none")
+            continue
+        in_contact += 1
+        # shear.dat prints 12 significant digits.
+        check(len(normal) == 1 and close(normal[0], row["F_n"], 1e-10) and close(tangential[0], abs(row["F_t"]), 1e-10),
+              f"{label}: contact forces {normal}, {tangential} against F_n {row['F_n']}, |F_t| {abs(row['F_t'])}")
+        check(close(field(particles, "mu_eff"), row["mu_eff"], 1e-10), f"{label}: mu_eff")
+    check(in_contact == len(rows) > 0, f"shear_friction: {in_contact} frames in contact, {len(rows)} rows")
+    print(f"dpm.shear_friction: {len(series)} frames, {in_contact} in contact match shear.dat")
+
+
+def segment(r, sigma_mu, sigma_beta):
+    """Eq. (9.20): the circular segment of the vertex disk mu beyond the radical line with beta."""
+    a, b = 0.5 * sigma_mu, 0.5 * sigma_beta
+    if r >= a + b:
+        return 0.0
+    c = min(1.0, max(-1.0, (r * r - b * b + a * a) / (2 * r) / a))
+    return a * a * (math.acos(c) - c * math.sqrt(1 - c * c))
+
+
+def packing_fraction_of_frame(particles, L):
+    """Eqs. (9.18)-(9.22) recomputed from a frame's polygons and vertex radii: (phi, A_polygon / L^2)."""
+    radius = point_tuples(particles, "radius")
+    shapes = []
+    for c in range(particles.GetNumberOfCells()):
+        ids = cell_points(particles, c)
+        shapes.append(([particles.GetPoint(i)[:2] for i in ids], 2 * radius[ids[0]][0]))
+    polygon = vertices = sector = pair = 0.0
+    for points, sigma in shapes:
+        n = len(points)
+        polygon += 0.5 * sum(points[i][0] * points[(i + 1) % n][1] - points[(i + 1) % n][0] * points[i][1]
+                             for i in range(n))
+        vertices += n * math.pi * sigma * sigma / 4
+        for i in range(n):
+            p, q, r = points[i - 1], points[i], points[(i + 1) % n]
+            e, f = (q[0] - p[0], q[1] - p[1]), (r[0] - q[0], r[1] - q[1])
+            turning = math.atan2(e[0] * f[1] - e[1] * f[0], e[0] * f[0] + e[1] * f[1])
+            sector += sigma * sigma * (math.pi - turning) / 8
+            pair += segment(math.hypot(*f), sigma, sigma)
+    for m, (pm, sm) in enumerate(shapes):
+        for b, (pb, sb) in enumerate(shapes):
+            if b == m:
+                continue
+            for p in pm:
+                for q in pb:
+                    d = [p[c] - q[c] for c in range(2)]
+                    d = [d[c] - L[c] * round(d[c] / L[c]) for c in range(2)]
+                    pair += segment(math.hypot(*d), sm, sb)
+    area = L[0] * L[1]
+    return (polygon + vertices - sector - pair) / area, polygon / area
+
+
+def check_packing_fraction(softgrain, work):
+    """dpm.packing_fraction: one frame of the jammed packing; phi of eqs. (9.18)-(9.22) recomputed from the
+    frame's polygons against the summary's, the contacts against eq. (9.4)."""
+    out = work / "packing-fraction"
+    run(softgrain, out, "dpm.packing_fraction", "--vtk", "--set", "samples=1000")
+    result = out / "dpm.packing_fraction"
+    s = summary(result)
+    series = read_series(result, "dpm.packing_fraction")
+    check(len(series) == 1, f"packing_fraction: {len(series)} frames")
+    for frame in series:
+        _, particles, _ = frame["particles"]
+        box, contacts = frame["box"][1], frame["contacts"][1]
+        L = box_sides(box)
+        check(close(L[0], s["box"], 1e-15), f"packing_fraction: box {L} against {s['box']}")
+        check(particles.GetNumberOfPolys() == 7 and particles.GetNumberOfPoints() == 35, "packing_fraction: cells")
+        phi, polygon = packing_fraction_of_frame(particles, L)
+        # The same sums from the same coordinates in another order: round-off, 1e-12.
+        check(close(phi, s["phi_analytic"], 1e-12) and close(field(particles, "phi"), s["phi_analytic"], 1e-15),
+              f"packing_fraction: phi {phi} from the polygons, summary {s['phi_analytic']}")
+        check(close(polygon, s["A_polygon_analytic"], 1e-12), f"packing_fraction: A_polygon {polygon}")
+        lines = check_contact_balance(particles, contacts, "packing_fraction")
+        check_rough_contacts(particles, contacts, box, "packing_fraction")
+        check(lines > 0, "packing_fraction: no contacts in a jammed packing")
+        print(f"dpm.packing_fraction: phi = {phi:.12f} from the frame, {lines} contacts")
+
+
+def check_crystal_modes(softgrain, work):
+    """dpm.crystal_modes: the crystal and its mode; the mode against mode.dat and the eigenvalue equation
+    H u = lambda u of eq. (9.28) with the pair Hessian of k/2 (sigma - r)^2 recomputed from the frame."""
+    rows_n = 6
+    out = work / "crystal"
+    run(softgrain, out, "dpm.crystal_modes", "--vtk", "--set", f"rows={rows_n}")
+    result = out / "dpm.crystal_modes"
+    s = summary(result)
+    rows = table(result / "mode.dat")
+    series = read_series(result, "dpm.crystal_modes")
+    check(len(series) == 1, f"crystal: {len(series)} frames")
+    for frame in series:
+        _, disks, _ = frame["particles"]
+        L = box_sides(frame["box"][1])
+        n = rows_n * rows_n
+        check(disks.GetNumberOfVerts() == n == disks.GetNumberOfPoints(), "crystal: disks")
+        check(frame["contacts"][1].GetNumberOfLines() == 3 * n, f"crystal: {frame['contacts'][1].GetNumberOfLines()} "
+              f"contacts, 6 per disk in a compressed triangular crystal")
+        u = mode_checks(disks, "crystal")
+        check(all(abs(a[0] - r["ux"]) <= 1e-11 and abs(a[1] - r["uy"]) <= 1e-11 for a, r in zip(u, rows)),
+              "crystal: mode differs from mode.dat")
+        lam = field(disks, "lambda_mode")
+        check(close(lam, s["lambda_mode"], 1e-15) and close(lam, s["lambda_mode_exact"], 1e-9),
+              f"crystal: lambda {lam}, exact phonon {s['lambda_mode_exact']}")
+        sigma = 2 * point_tuples(disks, "radius")[0][0]
+        hu = [[0.0, 0.0] for _ in range(n)]
+        for i in range(n):
+            for j in range(i + 1, n):
+                d = [disks.GetPoint(j)[c] - disks.GetPoint(i)[c] for c in range(2)]
+                d = [d[c] - L[c] * round(d[c] / L[c]) for c in range(2)]
+                r = math.hypot(*d)
+                if r >= sigma:
+                    continue
+                e = [d[0] / r, d[1] / r]
+                # U'' e e^T + (U'/r)(I - e e^T), U'' = k = 1, U' = -(sigma - r) (crystal.hpp).
+                K = [[e[a] * e[b] - (sigma - r) / r * ((a == b) - e[a] * e[b]) for b in range(2)] for a in range(2)]
+                du = [u[i][c] - u[j][c] for c in range(2)]
+                for a in range(2):
+                    f = K[a][0] * du[0] + K[a][1] * du[1]
+                    hu[i][a] += f
+                    hu[j][a] -= f
+        # Eigensolver round-off: n eps lambda_max (lambda_max < 6 k in this crystal): 1e-12.
+        residual = max(abs(hu[i][a] - lam * u[i][a]) for i in range(n) for a in range(2))
+        check(residual <= 1e-12, f"crystal: |H u - lambda u| = {residual}")
+        print(f"dpm.crystal_modes: H u = lambda u to {residual:.1e} from the frame")
+
+
+def check_rearrangement(softgrain, work):
+    """dpm.rearrangement: a frame per compression step; phi from the disks, the contact networks before and
+    after against the summary, the irreversible step marked."""
+    out = work / "rearrangement"
+    run(softgrain, out, "dpm.rearrangement", "--vtk", "--set", "particles=12", "dphi=1e-3")
+    result = out / "dpm.rearrangement"
+    s = summary(result)
+    series = read_series(result, "dpm.rearrangement")
+    check(s["found"] and len(series) == s["step"] + 1, f"rearrangement: {len(series)} frames, step {s['step']}")
+    threshold = s["contact_overlap_threshold"]
+    networks, changed = [], 0
+    for k, frame in enumerate(series):
+        t, disks, _ = frame["particles"]
+        contacts = frame["contacts"][1]
+        label = f"rearrangement frame {k}"
+        check(t == k == field(disks, "step"), f"{label}: time {t}")
+        L = box_sides(frame["box"][1])
+        radius = point_tuples(disks, "radius")
+        n = disks.GetNumberOfPoints()
+        phi = sum(math.pi * r[0] ** 2 for r in radius) / (L[0] * L[1])
+        check(close(phi, field(disks, "phi"), 1e-12), f"{label}: phi {field(disks, 'phi')}, disks {phi}")
+        touching, network = set(), set()
+        for i in range(n):
+            for j in range(i + 1, n):
+                d = [disks.GetPoint(j)[c] - disks.GetPoint(i)[c] for c in range(2)]
+                d = [d[c] - L[c] * round(d[c] / L[c]) for c in range(2)]
+                overlap = radius[i][0] + radius[j][0] - math.hypot(*d)
+                if overlap > 0:
+                    touching.add((i, j))
+                if overlap > threshold:
+                    network.add((i, j))
+        lines = set(zip(map(int, cell_values(contacts, "particle") or []),
+                        map(int, cell_values(contacts, "other_particle") or [])))
+        check(lines == touching, f"{label}: contact lines {sorted(lines ^ touching)} differ from the overlaps")
+        check(len(network) == field(disks, "network_contacts"), f"{label}: network {len(network)}")
+        check((k > 0 and network != networks[-1]) == (field(disks, "network_changed") == 1),
+              f"{label}: network_changed {field(disks, 'network_changed')}")
+        changed += field(disks, "network_changed") == 1
+        check((field(disks, "irreversible") == 1) == (k == len(series) - 1), f"{label}: irreversible")
+        networks.append(network)
+    check(changed == s["elastic_network_changes"] + 1, f"rearrangement: {changed} network changes, summary "
+          f"{s['elastic_network_changes']} elastic + 1")
+    if len(series) >= 2:
+        check(len(networks[-2]) == s["contacts_before"] and len(networks[-1]) == s["contacts_after"],
+              f"rearrangement: networks {len(networks[-2])}, {len(networks[-1])} against the summary's "
+              f"{s['contacts_before']}, {s['contacts_after']}")
+        broken, formed = networks[-2] - networks[-1], networks[-1] - networks[-2]
+        check(len(broken) == s["contacts_broken"] and len(formed) == s["contacts_formed"],
+              f"rearrangement: {len(broken)} broken, {len(formed)} formed")
+        last, before = series[-1]["particles"][1], series[-2]["particles"][1]
+        check(close(field(last, "phi"), s["phi_after"], 1e-15) and close(field(before, "phi"), s["phi_before"], 1e-15)
+              and close(field(last, "pressure"), s["pressure_after"], 1e-15), "rearrangement: phi and P")
+    # Every 10th step, and always the rearrangement's.
+    run(softgrain, work / "rearrangement-every", "dpm.rearrangement", "--vtk", "--vtk-every", "10", "--set",
+        "particles=12", "dphi=1e-3")
+    thinned = read_series(work / "rearrangement-every" / "dpm.rearrangement", "dpm.rearrangement")
+    expected = [k for k in range(s["step"] + 1) if k % 10 == 0 or k == s["step"]]
+    check([frame["particles"][0] for frame in thinned] == expected,
+          f"rearrangement --vtk-every 10: steps {[frame['particles'][0] for frame in thinned]}, expected {expected}")
+    print(f"dpm.rearrangement: {len(series)} frames, rearrangement at step {s['step']}")
+
+
+def check_compress_box(softgrain, work):
+    """dpm.compress_box (disks, deformable): a frame per state; the strain from the walls and the wall
+    pressures from the particles' forces on the vertices touching them (static balance) against pressure.dat."""
+    for model, extra, points in (("disks", ["particles=6"], 6),
+                                 ("deformable", ["particles=4", "nodes_small=6", "nodes_large=8"], 2 * 6 + 2 * 8)):
+        out = work / f"compress-box-{model}"
+        run(softgrain, out, "dpm.compress_box", "--vtk", "--set", f"model={model}", "steps=3", *extra)
+        result = out / "dpm.compress_box"
+        s = summary(result)
+        rows = table(result / "pressure.dat")
+        series = read_series(result, "dpm.compress_box")
+        check(len(series) == len(rows) == 4, f"compress_box {model}: {len(series)} frames, {len(rows)} rows")
+        h0 = box_sides(series[0]["walls"][1])[1] if series else 1
+        unit, p0 = s["pressure_unit_over_kc"], 1e-2  # pressure_start's default
+        for k, (frame, row) in enumerate(zip(series, rows)):
+            t, particles, _ = frame["particles"]
+            label = f"compress_box {model} frame {k}"
+            w, h = box_sides(frame["walls"][1])
+            check(particles.GetNumberOfPoints() == points, f"{label}: {particles.GetNumberOfPoints()} points")
+            check(close(t, row["strain"], 1e-10) and close(1 - h / h0, row["strain"], 1e-10),
+                  f"{label}: time {t}, walls' strain {1 - h / h0}, table {row['strain']}")
+            radius, force = point_tuples(particles, "radius"), point_tuples(particles, "force")
+            # A vertex overlapping a wall is held by it: the particles' force on it balances the wall's, so
+            # the wall pressure is the sum of those forces per length (both walls of a pair, as the table).
+            fx = fy = 0.0
+            touching = 0
+            for i in range(particles.GetNumberOfPoints()):
+                x, y, _ = particles.GetPoint(i)
+                r = radius[i][0]
+                for position, axis, sign in ((0, 0, -1), (w, 0, 1), (0, 1, -1), (h, 1, 1)):
+                    if sign * ((x, y)[axis] - position) > -r:
+                        touching += 1
+                        if axis == 0:
+                            fx += sign * force[i][0]
+                        else:
+                            fy += sign * force[i][1]
+            # FIRE leaves each force component below 1e-3 P0 (in the system's units): per touching vertex.
+            bound = touching * 1e-3 * p0
+            check(abs(fx / (2 * h) / unit - row["P_x"]) <= bound / (2 * h) + 1e-10 * row["P_x"]
+                  and abs(fy / (2 * w) / unit - row["P_y"]) <= bound / (2 * w) + 1e-10 * row["P_y"],
+                  f"{label}: wall pressures from the vertex forces {fx / (2 * h) / unit}, {fy / (2 * w) / unit}, "
+                  f"table {row['P_x']}, {row['P_y']}")
+            check(close(field(particles, "pressure_y"), row["P_y"], 1e-10), f"{label}: field pressure_y")
+            check_contact_balance(particles, frame["contacts"][1], label)
+    print("dpm.compress_box: wall pressures from the frames match pressure.dat")
+
+
+def check_boundary_jam(softgrain, work):
+    """dpm.boundary_jam: a frame per packing; the disk-disk contacts from the frame's disks against
+    packings.dat."""
+    out = work / "boundary-jam"
+    nodes = 50
+    run(softgrain, out, "dpm.boundary_jam", "--vtk", "--set", "trials=2", f"boundary_nodes={nodes}",
+        "boundary_sigma=0.4")
+    result = out / "dpm.boundary_jam"
+    rows = table(result / "packings.dat")
+    series = read_series(result, "dpm.boundary_jam")
+    check(len(series) == len(rows) == 2, f"boundary_jam: {len(series)} frames, {len(rows)} rows")
+    for k, (frame, row) in enumerate(zip(series, rows)):
+        t, data, _ = frame["particles"]
+        label = f"boundary_jam frame {k}"
+        check(t == row["trial"], f"{label}: time {t}")
+        check(data.GetNumberOfVerts() == 4 and data.GetNumberOfPolys() == 1 and data.GetNumberOfPoints() == 4 + nodes,
+              f"{label}: {data.GetNumberOfVerts()} disks, {data.GetNumberOfPolys()} rings")
+        radius = point_tuples(data, "radius")
+        disks = [(data.GetPoint(i)[:2], radius[i][0]) for i in range(4)]
+        # Disk-disk contacts: centres closer than the disk diameter d = 1.
+        geometric = sum(math.dist(disks[i][0], disks[j][0]) < disks[i][1] + disks[j][1]
+                        for i in range(4) for j in range(i + 1, 4))
+        contacts = frame["contacts"][1]
+        mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+        lines = sum(1 for a, b in zip(mine, other) if a < 4 and b < 4)
+        check(geometric == lines == row["contacts"] == field(data, "disk_contacts"),
+              f"{label}: {geometric} disk contacts from the centres, {lines} lines, table {row['contacts']}")
+        check_contact_balance(data, contacts, label)
+    print("dpm.boundary_jam: disk contacts of the frames match packings.dat")
+
+
+def check_shear_modulus(softgrain, work):
+    """dpm.shear_modulus: frames of the first packing at each strain step of each pressure; the box a
+    parallelogram of the strain, the particles' centres inside it, G from the frames' stresses against
+    modulus.dat."""
+    out = work / "shear-modulus"
+    steps, dgamma = 2, 5e-9
+    run(softgrain, out, "dpm.shear_modulus", "--vtk", "--set", "particles=6", "packings=2", "pressures=2",
+        f"strain_steps={steps}", f"strain_step={dgamma}")
+    result = out / "dpm.shear_modulus"
+    rows = [r for r in table(result / "modulus.dat") if r["packing"] == 0]
+    series = read_series(result, "dpm.shear_modulus")
+    check(len(series) == len(rows) * (steps + 1) == 9, f"shear_modulus: {len(series)} frames, {len(rows)} states")
+    for state, row in enumerate(rows):
+        gammas, stresses = [], []
+        for step in range(steps + 1):
+            k = state * (steps + 1) + step
+            if k >= len(series):
+                break
+            t, disks, _ = series[k]["particles"]
+            box = series[k]["box"][1]
+            label = f"shear_modulus frame {k}"
+            check(t == k and field(disks, "state") == state and field(disks, "step") == step, f"{label}: time {t}")
+            gamma = field(disks, "gamma")
+            check(close(gamma, step * dgamma, 1e-12), f"{label}: gamma {gamma}, expected {step} x {dgamma}")
+            corners = [box.GetPoint(i)[:2] for i in range(4)]
+            Lx, Ly = corners[1][0], corners[3][1]
+            # The parallelogram (0, 0), (L_x, 0), (L_x + gamma L_y, L_y), (gamma L_y, L_y): its shear is gamma.
+            check(corners[0] == (0, 0) and corners[1][1] == 0 and close(corners[3][0] / Ly, gamma, 1e-12)
+                  and close(corners[2][0] - corners[3][0], Lx, 1e-15), f"{label}: box {corners}")
+            radius = point_tuples(disks, "radius")
+            n = disks.GetNumberOfPoints()
+            for i in range(n):
+                x, y, _ = disks.GetPoint(i)
+                s_, t_ = (x - gamma * y) / Lx, y / Ly
+                check(0 <= s_ < 1 and 0 <= t_ < 1, f"{label}: disk {i} at ({x}, {y}) outside the sheared box")
+            phi = sum(math.pi * r[0] ** 2 for r in radius) / (Lx * Ly)
+            check(close(phi, row["phi"], 1e-10) and close(field(disks, "pressure"), row["P"], 1e-10),
+                  f"{label}: phi {phi} from the disks, P {field(disks, 'pressure')}; table {row['phi']}, {row['P']}")
+            gammas.append(gamma)
+            stresses.append(field(disks, "shear_stress"))
+        if len(gammas) == steps + 1:
+            # G: the least-squares slope of Sigma~ against gamma (shear_modulus.hpp).
+            mg, ms = sum(gammas) / len(gammas), sum(stresses) / len(stresses)
+            G = sum((g - mg) * (s_ - ms) for g, s_ in zip(gammas, stresses)) / sum((g - mg) ** 2 for g in gammas)
+            check(abs(G - row["G"]) <= 1e-9 * abs(row["G"]), f"shear_modulus state {state}: G {G} from the "
+                  f"frames, modulus.dat {row['G']}")
+    print(f"dpm.shear_modulus: {len(series)} frames of packing 0, G from the frames matches modulus.dat")
+
+
 def point_tuples(data, name):
     """The point array `name` as a list of tuples (None if absent)."""
     array = data.GetPointData().GetArray(name)
@@ -743,6 +1169,14 @@ def main():
     check_tissue(softgrain, work)
     check_compress2d(softgrain, work)
     check_slump(softgrain, work)
+    check_modes(softgrain, work)
+    check_shear_friction(softgrain, work)
+    check_packing_fraction(softgrain, work)
+    check_crystal_modes(softgrain, work)
+    check_rearrangement(softgrain, work)
+    check_compress_box(softgrain, work)
+    check_boundary_jam(softgrain, work)
+    check_shear_modulus(softgrain, work)
     check_jam(softgrain, work)
     check_vsm(softgrain, work)
     check_sd(softgrain, work)
