@@ -6,6 +6,7 @@ the module path)."""
 import argparse
 import os
 import sys
+import xml.etree.ElementTree as ET
 
 from paraview import simple
 
@@ -35,6 +36,15 @@ def open_series(args):
     if not 0 <= index < len(times):
         sys.exit(f"{script_name()}: --time {args.time}: allowed: 0 .. {len(times) - 1}, first or last")
     return reader, times, index
+
+
+def part(reader, pvd, name):
+    """The dataset `name` of every frame ("particles", "walls", ...), or None if the collection has none.
+    With a single dataset the reader gives it as such, not as a block to extract."""
+    names = {entry.get("name") for entry in ET.parse(pvd).getroot().iter("DataSet")}
+    if name not in names:
+        return None
+    return reader if len(names) == 1 else simple.ExtractBlock(Input=reader, Selectors=[f"/Root/{name}"])
 
 
 def require_array(array, available):

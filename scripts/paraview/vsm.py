@@ -10,8 +10,6 @@ Without --screenshot it opens an interactive window at the chosen time; with it,
 writes the PNG. --time is a frame index (0, 1, ...), "first" or "last" (scripts/paraview/series.py).
 """
 
-import xml.etree.ElementTree as ET
-
 from paraview import simple
 
 import series
@@ -23,10 +21,8 @@ def main():
     reader, times, index = series.open_series(args)
     view = series.view_at(times[index], orientation_axes=True)
 
-    # With one dataset (the free L-block: no walls) the reader gives it as such, not as blocks to extract.
-    parts = {e.get("name") for e in ET.parse(args.pvd).getroot().iter("DataSet")}
-    walls = "walls" in parts
-    particles = simple.ExtractBlock(Input=reader, Selectors=["/Root/particles"]) if walls else reader
+    particles = series.part(reader, args.pvd, "particles")
+    walls = series.part(reader, args.pvd, "walls")
     series.require_array(args.array, reader.PointData.keys())
     display = simple.Show(particles, view)
     display.Representation = "Points"
@@ -34,8 +30,8 @@ def main():
     display.PointSize = 14
     series.colour_by(display, view, "POINTS", args.array, "Jet")
 
-    if walls:
-        walls_display = simple.Show(simple.ExtractBlock(Input=reader, Selectors=["/Root/walls"]), view)
+    if walls is not None:
+        walls_display = simple.Show(walls, view)
         simple.ColorBy(walls_display, None)
         walls_display.AmbientColor = walls_display.DiffuseColor = [0.6, 0.6, 0.6]
         walls_display.Opacity = 0.25

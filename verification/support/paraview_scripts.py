@@ -14,9 +14,11 @@ and checks what they drew:
   - a wrong --array or --time stops the script with a message naming what is allowed.
 
 The scenes are spd.ring_compression (coloured by the elastic energy at frame 2, which differs from the
-last frame's), dpm.jam (area ratio, last frame), dpm.compress3d (volume ratio, 3D) and vsm.punch (von Mises
-stress at frame 1). pvbatch renders into an X server of its own: Xvfb with -displayfd, which picks a free
-display number itself (xvfb-run -a races with other X servers started at the same moment).
+last frame's), dpm.jam of shells (area ratio, last frame) and of smooth disks (one-vertex particles, drawn
+only as the vertex disks of dpm.py: by particle id), dpm.compress3d (volume ratio, 3D) and vsm.punch (von
+Mises stress at frame 1). pvbatch renders into an X server of its own: Xvfb with -displayfd, which picks a free
+display number itself (xvfb-run -a races with other X servers started at the same moment), and -noreset
+(see start_display).
 
   paraview_scripts.py SOFTGRAIN [WORKDIR]
 
@@ -57,8 +59,10 @@ def check(condition, message):
 def start_display():
     """An Xvfb server on a display number it chooses itself; returns the process and DISPLAY."""
     ready, announce = os.pipe()
+    # -noreset: by default the server resets when its last client leaves, and a pvbatch that connects during
+    # the reset aborts with "bad X server connection" (measured: 1 of 12 back-to-back runs; 0 of 20 with it).
     server = subprocess.Popen(["Xvfb", "-displayfd", str(announce), "-screen", "0", "1280x1024x24",
-                               "-nolisten", "tcp"], pass_fds=(announce,), stdout=subprocess.DEVNULL,
+                               "-nolisten", "tcp", "-noreset"], pass_fds=(announce,), stdout=subprocess.DEVNULL,
                               stderr=subprocess.DEVNULL)
     os.close(announce)
     with os.fdopen(ready) as pipe:
@@ -159,8 +163,8 @@ def check_refusals(display, pvd):
               f"{done.stderr.strip()[-500:]}")
 
 
-def make_run(softgrain, work, scene, *settings):
-    out = work / scene
+def make_run(softgrain, work, label, scene, *settings):
+    out = work / label
     command = [softgrain, "run", scene, "--out", str(out), "--quiet", "--vtk", *settings]
     done = subprocess.run(command, capture_output=True, text=True)
     if not check(done.returncode == 0, f"{' '.join(command)}: exit {done.returncode}: {done.stderr.strip()}"):
@@ -182,11 +186,12 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     runs = {
-        "spd": make_run(softgrain, work, "spd.ring_compression", "--set", "nodes=32"),
-        "dpm2d": make_run(softgrain, work, "dpm.jam", "--set", "particles=8", "--set", "model=shell",
+        "spd": make_run(softgrain, work, "spd", "spd.ring_compression", "--set", "nodes=32"),
+        "dpm2d": make_run(softgrain, work, "dpm2d", "dpm.jam", "--set", "particles=8", "--set", "model=shell",
                           "--set", "pressures=2"),
-        "dpm3d": make_run(softgrain, work, "dpm.compress3d"),
-        "vsm": make_run(softgrain, work, "vsm.punch", "--set", "per_side=5", "--set", "layers=2",
+        "disks": make_run(softgrain, work, "disks", "dpm.jam", "--set", "particles=8", "--set", "pressures=2"),
+        "dpm3d": make_run(softgrain, work, "dpm3d", "dpm.compress3d"),
+        "vsm": make_run(softgrain, work, "vsm", "vsm.punch", "--set", "per_side=5", "--set", "layers=2",
                         "--vtk-every", "50"),
     }
     server, display = start_display()
@@ -194,6 +199,7 @@ def main():
         drawings = (
             ("spd", "spd.py", "CELLS", "elastic_energy", "2", ["--array", "elastic_energy"]),
             ("dpm2d", "dpm.py", "CELLS", "area_ratio", "last", []),
+            ("disks", "dpm.py", "CELLS", "particle_id", "last", ["--array", "particle_id"]),
             ("dpm3d", "dpm.py", "CELLS", "volume_ratio", "last", []),
             ("vsm", "vsm.py", "POINTS", "von_mises", "1", ["--array", "von_mises"]),
         )
