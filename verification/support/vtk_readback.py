@@ -644,6 +644,88 @@ def check_sd(softgrain, work):
     print("sd.many: frames of the line and the cluster match many.dat")
 
 
+def check_beam(softgrain, work):
+    """spd.beam, cantilever and simply supported: frames along the damped relaxation (every 100th force check
+    here, 1600 steps) and the relaxed state, whose nodes are profile.dat's and whose largest deflection is
+    the discrete hinge chain's exact small-load result."""
+    every = 100
+    for support in ("cantilever", "simple"):
+        out = work / f"beam-{support}"
+        nodes, length = 11, 1.0
+        run(softgrain, out, "spd.beam", "--vtk", "--vtk-every", str(every), "--set", f"nodes={nodes}",
+            f"support={support}")
+        result = out / "spd.beam"
+        s = summary(result)
+        rows = table(result / "profile.dat")
+        series = read_series(result, "spd.beam")
+        # Opportunities: step 0 and each unsuccessful check (every 16 steps) before the converged one.
+        checks = s["steps"] // 16
+        expected = (checks + every - 1) // every + 1
+        check(len(series) == expected == s.get("vtk_frames"),
+              f"beam {support}: {len(series)} frames, expected {expected} for {s['steps']} steps")
+        ghost = 1 if support == "cantilever" else 0  # the clamp's frozen node at x = -l, drawn first
+        for k, frame in enumerate(series):
+            t, beam, _ = frame["beam"]
+            last = k == len(series) - 1
+            check(close(t, s["steps"] if last else 16 * every * k), f"beam {support} frame {k}: time {t}")
+            check(field(beam, "relaxed") == (1 if last else 0) and field(beam, "step") == t,
+                  f"beam {support} frame {k}: field data relaxed/step")
+            check(beam.GetNumberOfPoints() == nodes + ghost and beam.GetNumberOfLines() == 1,
+                  f"beam {support} frame {k}: {beam.GetNumberOfPoints()} points, {beam.GetNumberOfLines()} lines")
+        # The load is applied to the straight beam at step 0.
+        first = series[0]["beam"][1]
+        check(all(first.GetPoint(i)[1] == 0 for i in range(first.GetNumberOfPoints())),
+              f"beam {support}: frame 0 not straight")
+        # The relaxed state: each node at (x, -delta) of profile.dat (12 significant digits there).
+        relaxed = series[-1]["beam"][1]
+        for i, row in enumerate(rows):
+            x, y, _ = relaxed.GetPoint(ghost + i)
+            check(abs(x - row["x_over_L"] * length) <= 1e-11 and abs(-y - row["delta"]) <= 1e-11 * abs(row["delta"]),
+                  f"beam {support} node {i}: ({x}, {y}) against profile.dat ({row['x_over_L']}, {row['delta']})")
+        # The largest deflection against the small-load discrete chain (cantilever (n+1)(2n+1)/(2n^2), simply
+        # supported 1 + 2/n^2 times F L^3/(3 EI) or F L^3/(48 EI)); 1e-4: the relaxation residual 1e-6 F leaves
+        # < 5e-5 (lib/spd/beam.hpp), the geometric nonlinearity (delta/L)^2 < 1e-8.
+        deepest = max(-relaxed.GetPoint(i)[1] for i in range(relaxed.GetNumberOfPoints()))
+        ratio = deepest / s["deflection_max_theory"]
+        check(abs(ratio / s["ratio_discrete_theory"] - 1) <= 1e-4,
+              f"beam {support}: deflection {deepest} is {ratio} x theory, discrete chain {s['ratio_discrete_theory']}")
+    print(f"spd.beam: relaxation frames read back; the relaxed nodes equal profile.dat")
+
+
+def check_ring_pressure(softgrain, work):
+    """spd.ring_pressure with a compressible core: the relaxed ring without and with its core, area ratios
+    against the summary's moduli and the theory's K_shell (eq. (21)) and K_e (eq. (25))."""
+    out = work / "ring-pressure"
+    pressure, eta = 0.05, 2e4
+    run(softgrain, out, "spd.ring_pressure", "--vtk", "--set", "nodes=32", f"eta={eta}", f"pressure={pressure}")
+    result = out / "spd.ring_pressure"
+    s = summary(result)
+    series = read_series(result, "spd.ring_pressure")
+    check(len(series) == 2 == s.get("vtk_frames"), f"ring_pressure: {len(series)} frames, expected 2")
+    for k, (frame, measured, theory) in enumerate(zip(series, ("K_shell", "K_effective"),
+                                                       ("K_shell_theory", "K_effective_theory"))):
+        t, particles, _ = frame["particles"]
+        check(t == k and field(particles, "state") == k, f"ring_pressure frame {k}: time {t}")
+        check(field(particles, "pressure") == pressure and field(particles, "eta") == (0 if k == 0 else eta),
+              f"ring_pressure frame {k}: field data pressure, eta")
+        check(particles.GetNumberOfPolys() == 1 and particles.GetNumberOfPoints() == 32,
+              f"ring_pressure frame {k}: {particles.GetNumberOfPolys()} polygons")
+        strain = cell_values(particles, "area_ratio")[0] - 1
+        check(close(pressure / strain, s[measured], 1e-9),
+              f"ring_pressure frame {k}: p/(A/A0 - 1) = {pressure / strain} against {measured} {s[measured]}")
+        # Against the theory: 1e-5, the relaxation tolerance (1e-5 p s l0 on each vertex).
+        check(abs(pressure / strain / s[theory] - 1) <= 1e-5,
+              f"ring_pressure frame {k}: p/(A/A0 - 1) = {pressure / strain} against {theory} {s[theory]}")
+        # The uniform pressure excites only the breathing mode: the vertices stay on a circle.
+        points = [particles.GetPoint(i) for i in range(32)]
+        cx, cy = sum(p[0] for p in points) / 32, sum(p[1] for p in points) / 32
+        radii = [math.hypot(p[0] - cx, p[1] - cy) for p in points]
+        check(max(radii) - min(radii) <= 1e-9 * max(radii), f"ring_pressure frame {k}: not a circle")
+    core = cell_values(series[0]["particles"][1], "core_pressure")[0]
+    check(core == 0, f"ring_pressure frame 0: core pressure {core} without a core")
+    print("spd.ring_pressure: the two relaxed rings match K_shell and K_e")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -746,6 +828,8 @@ def main():
     check_jam(softgrain, work)
     check_vsm(softgrain, work)
     check_sd(softgrain, work)
+    check_beam(softgrain, work)
+    check_ring_pressure(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
