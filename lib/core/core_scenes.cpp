@@ -57,7 +57,9 @@ void register_core_scenes(SceneRegistry& registry)
             ParameterSpec::real("periods", 20.0, "1", "duration in periods T = 2 pi sqrt(m/k)").at_least(2.0),
         },
         run_harmonic,
-    });
+    }
+                     .without_vtk("a single mass on a spring, no particle to draw (its trajectory is in "
+                                  "harmonic.dat)"));
 }
 
 } // namespace softgrain

@@ -123,7 +123,9 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "protocol, and of its dense spectrum: time, FIRE iterations, force evaluations per "
                        "second (make bench)",
                        dpm::bench_parameters(), dpm::run_bench}
-                     .needing(dpm::bench_memory));
+                     .needing(dpm::bench_memory)
+                     .without_vtk("a timed scene: writing frames would change the time it measures; "
+                                  "dpm.jam and dpm.modes3d draw the packings it times"));
     registry.add(Scene{"dpm.rearrangement",
                        "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",

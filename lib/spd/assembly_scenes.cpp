@@ -246,7 +246,9 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
                 .positive(),
         },
         run_bench}
-                     .needing(rings_memory));
+                     .needing(rings_memory)
+                     .without_vtk("a timed scene: writing frames would change the time it measures; "
+                                  "spd.compaction draws colliding rings"));
     registry.add(Scene{
         "spd.compaction",
         "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell rings "

@@ -726,6 +726,56 @@ def check_ring_pressure(softgrain, work):
     print("spd.ring_pressure: the two relaxed rings match K_shell and K_e")
 
 
+def check_approach(softgrain, work):
+    """sd.approach (every 4th row here): the two spheres and their pair against approach.dat, eq. (2) and
+    the force balance eq. (1)."""
+    out = work / "approach"
+    kappa, every = 1e-4, 4
+    run(softgrain, out, "sd.approach", "--vtk", "--vtk-every", str(every), "--set", f"kappa={kappa}")
+    result = out / "sd.approach"
+    rows = table(result / "approach.dat")
+    series = read_series(result, "sd.approach")
+    check(len(series) == (len(rows) + every - 1) // every == summary(result).get("vtk_frames"),
+          f"approach: {len(series)} frames for {len(rows)} rows every {every}")
+    # approach.dat has 12 significant digits: 1e-10 relative.
+    same = lambda a, b: close(a, b, 1e-10)  # noqa: E731
+    for k, frame in enumerate(series):
+        row = rows[every * k]
+        t, particles, _ = frame["particles"]
+        _, pairs, _ = frame["pairs"]
+        label = f"approach frame {k}"
+        check(same(t, row["t"]) and same(field(particles, "time") * kappa, row["t"]), f"{label}: time {t}")
+        check(particles.GetNumberOfVerts() == 2 and pairs.GetNumberOfVerts() == 1, f"{label}: counts")
+        x0, x1 = particles.GetPoint(0), particles.GetPoint(1)
+        check(same(x1[0] - x0[0], row["X"]) and x0[0] == -x1[0] and x0[1] == x1[1] == 0,
+              f"{label}: centres {x0}, {x1} against X = {row['X']}")
+        h, delta = point_tuples(pairs, "gap")[0][0], point_tuples(pairs, "deflection")[0][0]
+        check(same(h, row["h"]) and same(delta, row["delta"]) and same(field(particles, "gap_min"), h),
+              f"{label}: gap {h}, deflection {delta} against {row['h']}, {row['delta']}")
+        # Eq. (2), R = 1: X = 2R + h - 2 delta.
+        check(close(x1[0] - x0[0], 2 + h - 2 * delta, 1e-12), f"{label}: eq. (2)")
+        v = point_tuples(particles, "velocity")
+        check(same((v[1][0] - v[0][0]) / kappa, row["X_dot"]) and same(point_tuples(pairs, "gap_rate")[0][0] / kappa,
+                                                                        row["h_dot"]),
+              f"{label}: velocities {v} against X-dot = {row['X_dot']} V")
+        # Eq. (1): F_ela balances F_ext = kappa E R^2, to the table's residual.
+        force = point_tuples(pairs, "force")[0][0]
+        check(abs(abs(force / kappa - 1) - row["force_balance_residual"]) <= 1e-11,
+              f"{label}: |F_ela/F_ext - 1| = {abs(force / kappa - 1)}, table {row['force_balance_residual']}")
+        pushed = point_tuples(particles, "external_force")
+        check(pushed[0][0] == kappa and pushed[1][0] == -kappa, f"{label}: external forces {pushed}")
+    print(f"sd.approach: {len(series)} frames match approach.dat")
+
+
+def check_refusal_reasons(softgrain, work):
+    """Scenes without frames by design say why: the timed benches, core.harmonic, sd.phase_diagram."""
+    for scene, words in (("spd.bench", ["timed scene"]), ("dpm.bench", ["timed scene"]),
+                         ("core.harmonic", ["no particle"]), ("sd.phase_diagram", ["not a time series"])):
+        done, _ = run(softgrain, work / "refused-reason", scene, "--vtk", expect=2)
+        check(all(w in done.stderr for w in ["--vtk", scene, "allowed for", *words]),
+              f"{scene} --vtk: message {done.stderr.strip()!r} lacks {words}")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -830,6 +880,8 @@ def main():
     check_sd(softgrain, work)
     check_beam(softgrain, work)
     check_ring_pressure(softgrain, work)
+    check_approach(softgrain, work)
+    check_refusal_reasons(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
