@@ -776,6 +776,70 @@ def check_refusal_reasons(softgrain, work):
               f"{scene} --vtk: message {done.stderr.strip()!r} lacks {words}")
 
 
+def check_patch(softgrain, work):
+    """vsm.patch: test A's one state and B, C along their ramp and hold (every 2000th step here) and their final
+    state: the displacement against the linear field u = r alpha M X of eq. (52), the walls moved by it."""
+    alpha = 1e-4
+    G = [[alpha * (3 * i + j + 1) for j in range(3)] for i in range(3)]  # alpha M, M = [1 2 3; 4 5 6; 7 8 9]
+    linear = lambda X, r: [r * sum(G[i][j] * X[j] for j in range(3)) for i in range(3)]  # noqa: E731
+    every, ramp = 2000, 5.0
+    for test in ("A", "B", "C"):
+        out = work / f"patch-{test}"
+        run(softgrain, out, "vsm.patch", "--vtk", "--vtk-every", str(every), "--set", f"test={test}",
+            f"ramp_time={ramp}", "hold_time=5")
+        result = out / "vsm.patch"
+        s = summary(result)
+        X = [(r["X1"], r["X2"], r["X3"]) for r in table(result / "particles.dat")]
+        series = read_series(result, "vsm.patch")
+        n = s["particles"]
+        steps = s["steps"]
+        # B, C: the steps 0, every, 2 every, ... and the final one.
+        expected = 1 if test == "A" else steps // every + 1 + (steps % every != 0)
+        check(len(series) == expected == s.get("vtk_frames"), f"patch {test}: {len(series)} frames, expected {expected}")
+        u_max = math.sqrt(sum(sum(G[i]) ** 2 for i in range(3)))  # the largest exact displacement, X = (1, 1, 1)
+        for k, frame in enumerate(series):
+            t, particles, _ = frame["particles"]
+            _, walls, _ = frame["walls"]
+            label = f"patch {test} frame {k}"
+            final = k == len(series) - 1
+            step = steps if final and test != "A" else every * k
+            load = 1.0 if test == "A" else min(t / ramp, 1.0)
+            check(field(particles, "step") == step and close(t, step * (s["dt"] or 0), 1e-12),
+                  f"{label}: time {t}, step {field(particles, 'step')}, expected {step}")
+            check(field(particles, "test") == s["test_id"] and close(field(particles, "load"), load, 1e-12),
+                  f"{label}: field data test {field(particles, 'test')}, load {field(particles, 'load')}")
+            check_vsm_particles(particles, label, n, 1.0)
+            # Reference positions: x - u equals particles.dat (12 digits there).
+            u = point_tuples(particles, "displacement")
+            check(all(abs(particles.GetPoint(a)[i] - u[a][i] - X[a][i]) <= 1e-11 for a in range(n) for i in range(3)),
+                  f"{label}: x - displacement differs from particles.dat")
+            # The walls: total displacement on every face (A, B) or on X3 = 0 only (C), each corner W at
+            # W + r alpha M W.
+            kinds, labels = cell_values(walls, "boundary_kind"), cell_values(walls, "face_label")
+            check(kinds == [1] * (1 if test == "C" else 6) and (test != "C" or labels == [4]),
+                  f"{label}: walls {labels} of kinds {kinds}")
+            for c in range(walls.GetNumberOfPolys()):
+                cell = walls.GetCell(c)
+                for q in range(4):
+                    w = walls.GetPoint(cell.GetPointId(q))
+                    W = [round(coordinate) for coordinate in w]  # the unit cube's corners
+                    moved = linear(W, load)
+                    check(all(abs(w[i] - W[i] - moved[i]) <= 1e-15 for i in range(3)),
+                          f"{label}: wall {labels[c]} corner {w} not at W + r alpha M W")
+            if not final:
+                continue
+            # The final state against eq. (52): A exact (the positions it sets), B and C within their error.
+            deviation = max(math.dist([u[a][i] for i in range(3)], linear(X[a], 1.0)) for a in range(n))
+            allowed = 1e-12 * u_max + (0 if test == "A" else s["max_error"])
+            check(deviation <= allowed, f"{label}: displacement {deviation} m from alpha M X, allowed {allowed}")
+            # A's deformation gradient is the exact I + alpha M (eq. (6) reproduces linear fields).
+            if test == "A":
+                F = point_tuples(particles, "deformation_gradient")
+                check(all(abs(F[a][3 * i + j] - (i == j) - G[i][j]) <= 1e-12 for a in range(n)
+                          for i in range(3) for j in range(3)), f"{label}: F is not I + alpha M")
+    print("vsm.patch: tests A, B, C frames follow the linear field of eq. (52)")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -881,6 +945,7 @@ def main():
     check_beam(softgrain, work)
     check_ring_pressure(softgrain, work)
     check_approach(softgrain, work)
+    check_patch(softgrain, work)
     check_refusal_reasons(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
