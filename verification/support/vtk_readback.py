@@ -840,6 +840,65 @@ def check_patch(softgrain, work):
     print("vsm.patch: tests A, B, C frames follow the linear field of eq. (52)")
 
 
+def check_compare_ring(softgrain, work):
+    """compare.ring by SPD and by DPM: a frame per recorded strain (eps = 0 and each row of ring.dat), the
+    ring's width and area ratio against the table, and its plate force from the frame against F R^2/B."""
+    nodes, h, E, nu, R = 32, 0.02, 1e6, 0.3, 1.0
+    l0 = 2 * R * math.sin(math.pi / nodes)
+    B = E * h ** 3 / (12 * (1 - nu ** 2)) * l0  # k_b l0, SPD eqs. (10)-(11) (decision compare-ring-mapping)
+    for model in ("spd", "dpm"):
+        out = work / f"compare-ring-{model}"
+        run(softgrain, out, "compare.ring", "--vtk", "--set", f"model={model}", f"nodes={nodes}", f"h_over_R={h}",
+            "strain_max=0.2", "strain_step=0.05")
+        result = out / "compare.ring"
+        rows = table(result / "ring.dat")
+        series = read_series(result, "compare.ring")
+        check(len(series) == len(rows) + 1 == summary(result).get("vtk_frames"),
+              f"compare.ring {model}: {len(series)} frames for {len(rows)} rows and eps = 0")
+        check(set(series[0]) == ({"particles", "walls", "contacts"} if model == "spd" else {"particles", "plates"}),
+              f"compare.ring {model}: parts {sorted(series[0])}")
+        for k, frame in enumerate(series):
+            t, particles, _ = frame["particles"]
+            label = f"compare.ring {model} frame {k}"
+            row = rows[k - 1] if k > 0 else {"eps": 0.0, "F_R2_over_B": None, "a_over_b0": 1.0, "V_over_V0": 1.0}
+            check(close(t, row["eps"], 1e-10) and close(field(particles, "strain"), row["eps"], 1e-10),
+                  f"{label}: time {t} against eps {row['eps']}")
+            check(particles.GetNumberOfPolys() == 1 and particles.GetNumberOfPoints() == nodes, f"{label}: counts")
+            xs = [particles.GetPoint(i)[0] for i in range(nodes)]
+            # ring.dat has 12 significant digits: 1e-10 relative.
+            check(close((max(xs) - min(xs)) / (2 * R), row["a_over_b0"], 1e-10),
+                  f"{label}: width {(max(xs) - min(xs)) / (2 * R)} against a/b0 {row['a_over_b0']}")
+            check(close(cell_values(particles, "area_ratio")[0], row["V_over_V0"], 1e-10),
+                  f"{label}: area ratio {cell_values(particles, 'area_ratio')[0]} against V/V0 {row['V_over_V0']}")
+            if k == 0:
+                continue
+            check(close(field(particles, "F_R2_over_B"), row["F_R2_over_B"], 1e-10), f"{label}: field F R^2/B")
+            if model == "spd":
+                # The top wall's force from the contact lines (as in check_ring).
+                _, walls, _ = frame["walls"]
+                _, contacts, _ = frame["contacts"]
+                top = cell_values(walls, "wall_id")[1]
+                mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+                f = contacts.GetCellData().GetArray("force")
+                force = sum((-1 if other[c] == top else 1 if mine[c] == top else 0) * f.GetTuple3(c)[1]
+                            for c in range(contacts.GetNumberOfLines()))
+                check(close(force * R ** 2 / B, row["F_R2_over_B"], 1e-9),
+                      f"{label}: top-wall force {force * R ** 2 / B} B/R^2 against {row['F_R2_over_B']}")
+            else:
+                # The top plate at D - delta = 2R + h - eps b0; the body's vertex forces where it touches
+                # balance F, to FIRE's tolerance: its rms force below 1e-5 B/R^2 / sqrt(2N) bounds the sum over
+                # k touching vertices by sqrt(k) 1e-5 B/R^2 (Cauchy-Schwarz).
+                _, plates, _ = frame["plates"]
+                top = max(plates.GetPoint(i)[1] for i in range(plates.GetNumberOfPoints()))
+                check(close(top, 2 * R + h - row["eps"] * 2 * R, 1e-12), f"{label}: top plate at {top}")
+                fy = point_tuples(particles, "force")
+                touching = [i for i in range(nodes) if top - particles.GetPoint(i)[1] < h / 2]
+                pushed = sum(fy[i][1] for i in touching)
+                check(abs(pushed * R ** 2 / B - row["F_R2_over_B"]) <= math.sqrt(len(touching)) * 1e-5,
+                      f"{label}: body force at the top plate {pushed * R ** 2 / B} B/R^2, F {row['F_R2_over_B']}")
+    print("compare.ring: SPD and DPM frames match ring.dat")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -946,6 +1005,7 @@ def main():
     check_ring_pressure(softgrain, work)
     check_approach(softgrain, work)
     check_patch(softgrain, work)
+    check_compare_ring(softgrain, work)
     check_refusal_reasons(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
