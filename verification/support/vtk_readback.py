@@ -899,6 +899,126 @@ def check_compare_ring(softgrain, work):
     print("compare.ring: SPD and DPM frames match ring.dat")
 
 
+def mesh_volumes(data):
+    """The volume each particle's closed triangle mesh encloses (divergence theorem), by particle_id."""
+    ids = cell_values(data, "particle_id")
+    volumes = {}
+    for c in range(data.GetNumberOfPolys()):
+        cell = data.GetCell(c)
+        a, b, d = (data.GetPoint(cell.GetPointId(q)) for q in range(3))
+        triple = (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
+                  + a[2] * (b[0] * d[1] - b[1] * d[0]))
+        volumes[int(ids[c])] = volumes.get(int(ids[c]), 0.0) + triple / 6
+    return volumes
+
+
+def check_shape3d(softgrain, work):
+    """dpm.shape3d: the mesh's one frame against faces.dat (face areas), the summary's counts (Euler), volume
+    and A^3D, and the unit sphere."""
+    out = work / "shape3d"
+    run(softgrain, out, "dpm.shape3d", "--vtk", "--set", "mesh=geodesic42")
+    result = out / "dpm.shape3d"
+    s = summary(result)
+    areas = [r["area"] for r in table(result / "faces.dat")]
+    series = read_series(result, "dpm.shape3d")
+    if not check(len(series) == 1 == s.get("vtk_frames"), f"shape3d: {len(series)} frames, expected 1"):
+        return
+    t, mesh, _ = series[0]["particles"]
+    check(t == 0, f"shape3d: time {t}")
+    check(mesh.GetNumberOfPoints() == s["vertices"] and mesh.GetNumberOfPolys() == s["faces"],
+          f"shape3d: {mesh.GetNumberOfPoints()} points, {mesh.GetNumberOfPolys()} faces")
+    edges = {tuple(sorted((mesh.GetCell(c).GetPointId(q), mesh.GetCell(c).GetPointId((q + 1) % 3))))
+             for c in range(mesh.GetNumberOfPolys()) for q in range(3)}
+    check(len(edges) == s["edges"] and mesh.GetNumberOfPoints() - len(edges) + mesh.GetNumberOfPolys() == 2,
+          f"shape3d: {len(edges)} edges, Euler characteristic not 2")
+    check(all(abs(math.dist(mesh.GetPoint(i), (0, 0, 0)) - 1) <= 1e-12 for i in range(mesh.GetNumberOfPoints())),
+          "shape3d: vertices not on the unit sphere")
+    written = cell_values(mesh, "face_area")
+    for c in range(mesh.GetNumberOfPolys()):
+        cell = mesh.GetCell(c)
+        a, b, d = (mesh.GetPoint(cell.GetPointId(q)) for q in range(3))
+        u, v = [b[i] - a[i] for i in range(3)], [d[i] - a[i] for i in range(3)]
+        area = 0.5 * math.sqrt((u[1] * v[2] - u[2] * v[1]) ** 2 + (u[2] * v[0] - u[0] * v[2]) ** 2
+                               + (u[0] * v[1] - u[1] * v[0]) ** 2)
+        # faces.dat has 12 significant digits: 1e-10 relative.
+        check(close(area, areas[c], 1e-10) and close(written[c], areas[c], 1e-10),
+              f"shape3d face {c}: area {area} (face_area {written[c]}) against faces.dat {areas[c]}")
+    volume = mesh_volumes(mesh)[0]
+    check(close(volume, s["volume"], 1e-12) and close(field(mesh, "volume"), s["volume"], 1e-15),
+          f"shape3d: enclosed volume {volume} against {s['volume']}")
+    area_sum = sum(areas)
+    A = area_sum ** 1.5 / (6 * math.sqrt(math.pi) * volume)  # A^3D = s^(3/2)/(6 sqrt(pi) v), sec. 9.3.1
+    check(close(A, s["shape_parameter_min"], 1e-10) and close(field(mesh, "shape_parameter"), A, 1e-10),
+          f"shape3d: A^3D {A} from the frame against {s['shape_parameter_min']}")
+    print("dpm.shape3d: the mesh frame matches faces.dat and the summary")
+
+
+def check_slide3d(softgrain, work):
+    """dpm.slide3d (every 5th of 21 positions here): the slider along the path of path.dat at its height, the
+    slab fixed, and the smooth force on the slider from the frame's vertex forces against mu_smooth."""
+    out = work / "slide3d"
+    every, gap, sigma = 5, 0.5, 1.0
+    run(softgrain, out, "dpm.slide3d", "--vtk", "--vtk-every", str(every), "--set", "steps=20", f"gap={gap}")
+    result = out / "dpm.slide3d"
+    s = summary(result)
+    rows = table(result / "path.dat")
+    series = read_series(result, "dpm.slide3d")
+    check(len(series) == (len(rows) + every - 1) // every == s.get("vtk_frames"),
+          f"slide3d: {len(series)} frames for {len(rows)} positions every {every}")
+    slab, slider = s["slab_vertices"], s["slider_vertices"]
+    slab_points = None
+    for k, frame in enumerate(series):
+        row = rows[every * k]
+        t, data, _ = frame["particles"]
+        label = f"slide3d frame {k}"
+        check(close(t, row["x"], 1e-10) and close(field(data, "x"), row["x"], 1e-10), f"{label}: time {t}")
+        check(data.GetNumberOfPoints() == slab + slider, f"{label}: {data.GetNumberOfPoints()} points")
+        for name in ("U_rough", "U_smooth", "mu_rough", "mu_smooth"):
+            check(close(field(data, name), row[name], 1e-10), f"{label}: {name} {field(data, name)} against {row[name]}")
+        points = [data.GetPoint(i) for i in range(slab + slider)]
+        slab_points = slab_points or points[:slab]
+        check(points[:slab] == slab_points, f"{label}: the slab moved")
+        # The slider (vertex 0 down, a centrally symmetric mesh): centre at x, lowest vertex gap above the
+        # slab's top face z = sigma.
+        centre = [sum(p[c] for p in points[slab:]) / slider for c in range(3)]
+        check(close(centre[0], row["x"], 1e-10), f"{label}: slider centre {centre} against x {row['x']}")
+        check(close(min(p[2] for p in points[slab:]), sigma + gap, 1e-12), f"{label}: slider height")
+        f = point_tuples(data, "force")
+        fx, fz = sum(f[i][0] for i in range(slab, slab + slider)), sum(f[i][2] for i in range(slab, slab + slider))
+        check(fz > 0 and close(fx / fz, row["mu_smooth"], 1e-9),
+              f"{label}: F_x/F_z on the slider {fx / fz} against mu_smooth {row['mu_smooth']}")
+    print(f"dpm.slide3d: {len(series)} frames match path.dat")
+
+
+def check_shear_modulus3d(softgrain, work):
+    """dpm.shear_modulus3d, two packings: frames of the first packing only, one per pressure state, with
+    pressure, phi and G of modulus_shell.dat's packing 0 and phi recomputed from the meshes and the box."""
+    out = work / "shear-modulus3d"
+    run(softgrain, out, "dpm.shear_modulus3d", "--vtk", "--set", "model=shell", "mesh=icosahedron",
+        "particles=2", "packings=2", "pressures=2")
+    result = out / "dpm.shear_modulus3d"
+    rows = [r for r in table(result / "modulus_shell.dat") if r["packing"] == 0]
+    series = read_series(result, "dpm.shear_modulus3d")
+    check(len(series) == len(rows) == 3 == summary(result).get("vtk_frames"),
+          f"shear_modulus3d: {len(series)} frames for {len(rows)} states of packing 0")
+    for k, (frame, row) in enumerate(zip(series, rows)):
+        t, data, _ = frame["particles"]
+        _, box, _ = frame["box"]
+        label = f"shear_modulus3d frame {k}"
+        check(t == k, f"{label}: time {t}")
+        for name, column in (("pressure", "P"), ("phi", "phi"), ("G", "G")):
+            check(close(field(data, name), row[column], 1e-10), f"{label}: {name} {field(data, name)} against {row[column]}")
+        check(data.GetNumberOfPoints() == 2 * 12 and data.GetNumberOfPolys() == 2 * 20 and box.GetNumberOfLines() == 12,
+              f"{label}: counts")
+        L = max(box.GetPoint(i)[0] for i in range(box.GetNumberOfPoints()))
+        phi = sum(mesh_volumes(data).values()) / L ** 3
+        check(close(phi, row["phi"], 1e-10), f"{label}: phi from the meshes {phi} against {row['phi']}")
+        for p in range(2):
+            centre = [sum(data.GetPoint(12 * p + v)[c] for v in range(12)) / 12 for c in range(3)]
+            check(all(0 <= c < L for c in centre), f"{label}: particle {p} centre {centre} outside [0, {L})")
+    print("dpm.shear_modulus3d: the first packing's frames match modulus_shell.dat")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -1007,6 +1127,9 @@ def main():
     check_patch(softgrain, work)
     check_compare_ring(softgrain, work)
     check_refusal_reasons(softgrain, work)
+    check_shape3d(softgrain, work)
+    check_slide3d(softgrain, work)
+    check_shear_modulus3d(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
