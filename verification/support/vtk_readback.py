@@ -20,6 +20,13 @@ run's tables and summary:
     momentum sum rho V v equals momentum.dat;
   - SD: sd.many on a line and in a cluster: gaps and velocities equal many.dat, |X_ij| = 2R + h - 2 delta
     (eq. 2);
+  - spd.beam: the relaxed nodes equal profile.dat, the deflection the discrete chain's; spd.ring_pressure:
+    area ratios against K_shell and K_e (eqs. (21), (25)); sd.approach: the pair against approach.dat, eq. (2)
+    and the force balance; vsm.patch A, B, C: displacements and walls against the linear field eq. (52);
+    compare.ring (SPD, DPM): widths and areas against ring.dat, the plate force against F R^2/B;
+    dpm.shape3d: face areas, Euler count, volume, A^3D; dpm.slide3d: the slider's path and F_x/F_z against
+    path.dat; dpm.shear_modulus3d: the first packing's phi from its meshes against modulus_shell.dat; the
+    refusals of the benches, core.harmonic and sd.phase_diagram name their reason;
   - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
     vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
     the box and phi;
