@@ -651,6 +651,11 @@ def check_sd(softgrain, work):
     print("sd.many: frames of the line and the cluster match many.dat")
 
 
+def relatively_close(a, b, tol):
+    """|a - b| <= tol max(|a|, |b|): for values far below 1, which close() compares absolutely."""
+    return abs(a - b) <= tol * max(abs(a), abs(b))
+
+
 def check_beam(softgrain, work):
     """spd.beam, cantilever and simply supported: frames along the damped relaxation (every 100th force check
     here, 1600 steps) and the relaxed state, whose nodes are profile.dat's and whose largest deflection is
@@ -744,8 +749,8 @@ def check_approach(softgrain, work):
     series = read_series(result, "sd.approach")
     check(len(series) == (len(rows) + every - 1) // every == summary(result).get("vtk_frames"),
           f"approach: {len(series)} frames for {len(rows)} rows every {every}")
-    # approach.dat has 12 significant digits: 1e-10 relative.
-    same = lambda a, b: close(a, b, 1e-10)  # noqa: E731
+    # approach.dat has 12 significant digits: 1e-10 relative (h goes down to 1e-6 R).
+    same = lambda a, b: relatively_close(a, b, 1e-10)  # noqa: E731
     for k, frame in enumerate(series):
         row = rows[every * k]
         t, particles, _ = frame["particles"]
@@ -765,9 +770,11 @@ def check_approach(softgrain, work):
         check(same((v[1][0] - v[0][0]) / kappa, row["X_dot"]) and same(point_tuples(pairs, "gap_rate")[0][0] / kappa,
                                                                         row["h_dot"]),
               f"{label}: velocities {v} against X-dot = {row['X_dot']} V")
-        # Eq. (1): F_ela balances F_ext = kappa E R^2, to the table's residual.
+        # Eq. (1): F_ela balances F_ext = kappa E R^2, to the table's residual (12 digits there; the frame's
+        # F_ela/F_ext - 1 is known to a few ulp, 1e-15).
         force = point_tuples(pairs, "force")[0][0]
-        check(abs(abs(force / kappa - 1) - row["force_balance_residual"]) <= 1e-11,
+        residual = row["force_balance_residual"]
+        check(abs(abs(force / kappa - 1) - residual) <= 1e-10 * residual + 1e-15,
               f"{label}: |F_ela/F_ext - 1| = {abs(force / kappa - 1)}, table {row['force_balance_residual']}")
         pushed = point_tuples(particles, "external_force")
         check(pushed[0][0] == kappa and pushed[1][0] == -kappa, f"{label}: external forces {pushed}")
@@ -961,10 +968,10 @@ def check_shape3d(softgrain, work):
 
 
 def check_slide3d(softgrain, work):
-    """dpm.slide3d (every 5th of 21 positions here): the slider along the path of path.dat at its height, the
+    """dpm.slide3d (every 3rd of 21 positions here): the slider along the path of path.dat at its height, the
     slab fixed, and the smooth force on the slider from the frame's vertex forces against mu_smooth."""
     out = work / "slide3d"
-    every, gap, sigma = 5, 0.5, 1.0
+    every, gap, sigma = 3, 0.5, 1.0  # every 3rd: positions off the symmetry points where F_x = 0
     run(softgrain, out, "dpm.slide3d", "--vtk", "--vtk-every", str(every), "--set", "steps=20", f"gap={gap}")
     result = out / "dpm.slide3d"
     s = summary(result)
@@ -980,8 +987,11 @@ def check_slide3d(softgrain, work):
         label = f"slide3d frame {k}"
         check(close(t, row["x"], 1e-10) and close(field(data, "x"), row["x"], 1e-10), f"{label}: time {t}")
         check(data.GetNumberOfPoints() == slab + slider, f"{label}: {data.GetNumberOfPoints()} points")
+        # path.dat has 12 significant digits: 1e-10 relative, and 1e-13 absolute for F_x/F_z (F_x is round-off,
+        # 1e-17, at the symmetry points).
         for name in ("U_rough", "U_smooth", "mu_rough", "mu_smooth"):
-            check(close(field(data, name), row[name], 1e-10), f"{label}: {name} {field(data, name)} against {row[name]}")
+            check(abs(field(data, name) - row[name]) <= 1e-10 * abs(row[name]) + 1e-13,
+                  f"{label}: {name} {field(data, name)} against {row[name]}")
         points = [data.GetPoint(i) for i in range(slab + slider)]
         slab_points = slab_points or points[:slab]
         check(points[:slab] == slab_points, f"{label}: the slab moved")
@@ -992,7 +1002,7 @@ def check_slide3d(softgrain, work):
         check(close(min(p[2] for p in points[slab:]), sigma + gap, 1e-12), f"{label}: slider height")
         f = point_tuples(data, "force")
         fx, fz = sum(f[i][0] for i in range(slab, slab + slider)), sum(f[i][2] for i in range(slab, slab + slider))
-        check(fz > 0 and close(fx / fz, row["mu_smooth"], 1e-9),
+        check(fz > 0 and abs(fx / fz - row["mu_smooth"]) <= 1e-10 * abs(row["mu_smooth"]) + 1e-13,
               f"{label}: F_x/F_z on the slider {fx / fz} against mu_smooth {row['mu_smooth']}")
     print(f"dpm.slide3d: {len(series)} frames match path.dat")
 
@@ -1013,8 +1023,10 @@ def check_shear_modulus3d(softgrain, work):
         _, box, _ = frame["box"]
         label = f"shear_modulus3d frame {k}"
         check(t == k, f"{label}: time {t}")
+        # modulus_shell.dat has 12 significant digits: 1e-10 relative (P_t = 1e-5).
         for name, column in (("pressure", "P"), ("phi", "phi"), ("G", "G")):
-            check(close(field(data, name), row[column], 1e-10), f"{label}: {name} {field(data, name)} against {row[column]}")
+            check(relatively_close(field(data, name), row[column], 1e-10),
+                  f"{label}: {name} {field(data, name)} against {row[column]}")
         check(data.GetNumberOfPoints() == 2 * 12 and data.GetNumberOfPolys() == 2 * 20 and box.GetNumberOfLines() == 12,
               f"{label}: counts")
         L = max(box.GetPoint(i)[0] for i in range(box.GetNumberOfPoints()))
