@@ -53,9 +53,9 @@ void check_A0_floppy(const Parameters& p)
                          std::to_string(A_min) + "; allowed: a real number >= it");
 }
 
-// ParaView frames of one packing: at each pressure state (time value: its index, P_t first) the relaxed packing
-// before it is sheared (the strain steps of 5e-9 would not show) and its box; field data pressure and phi
-// (as modulus_<model>.dat) and G, the modulus measured there.
+// ParaView frames of one packing: at each pressure state (time value: its index, P_t first) the relaxed
+// packing before it is sheared (the strain steps of 5e-9 would not show) and its box; field data pressure
+// and phi (as modulus_<model>.dat) and G, the modulus measured there.
 void write_pressure_frames(const Jam3dResult& packing, const ModulusMember& measured, vtk::Series& series)
 {
     DpmSystem3d system = packing.system;

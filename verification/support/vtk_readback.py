@@ -701,7 +701,7 @@ def check_beam(softgrain, work):
         ratio = deepest / s["deflection_max_theory"]
         check(abs(ratio / s["ratio_discrete_theory"] - 1) <= 1e-4,
               f"beam {support}: deflection {deepest} is {ratio} x theory, discrete chain {s['ratio_discrete_theory']}")
-    print(f"spd.beam: relaxation frames read back; the relaxed nodes equal profile.dat")
+    print("spd.beam: relaxation frames read back; the relaxed nodes equal profile.dat")
 
 
 def check_ring_pressure(softgrain, work):
@@ -809,7 +809,8 @@ def check_patch(softgrain, work):
         steps = s["steps"]
         # B, C: the steps 0, every, 2 every, ... and the final one.
         expected = 1 if test == "A" else steps // every + 1 + (steps % every != 0)
-        check(len(series) == expected == s.get("vtk_frames"), f"patch {test}: {len(series)} frames, expected {expected}")
+        check(len(series) == expected == s.get("vtk_frames"),
+              f"patch {test}: {len(series)} frames, expected {expected}")
         u_max = math.sqrt(sum(sum(G[i]) ** 2 for i in range(3)))  # the largest exact displacement, X = (1, 1, 1)
         for k, frame in enumerate(series):
             t, particles, _ = frame["particles"]
