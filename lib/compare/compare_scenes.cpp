@@ -37,7 +37,20 @@ void run_ring(const Parameters& p, RunContext& context)
     setup.strain_step = p.real("strain_step");
     setup.relax_tolerance = p.real("relax_tolerance");
     auto progress = context.progress("compare.ring");
-    const RingComparison r = compress_ring(setup, [&](double f) { progress.update(f); });
+    // ParaView frames, one per recorded strain (eps = 0 and each increment; --vtk-every N: every N-th), time
+    // value eps: the model's own datasets (RingFrameObserver), field data strain and F R^2/B.
+    RingFrameObserver frame;
+    if (context.vtk())
+        frame = [&](const RingObservation& o, std::vector<vtk::Part> parts) {
+            if (!context.vtk()->next()) return;
+            for (vtk::Part& part : parts) {
+                part.data.field("strain", o.strain);
+                part.data.field("F_R2_over_B", o.force);
+            }
+            context.vtk()->write(o.strain, parts);
+        };
+    const RingComparison r = compress_ring(
+        setup, [&](double f) { progress.update(f); }, frame);
     progress.finish();
     context.count_steps(r.steps);
 
@@ -147,7 +160,8 @@ void register_compare_scenes(SceneRegistry& registry)
                          const double n = static_cast<double>(p.integer("nodes"));
                          return p.choice("model") == "spd" ? spd::shell_model_memory(n, "vertices (nodes)")
                                                            : dpm::dpm_vertex_memory(n, "vertices (nodes)");
-                     }));
+                     })
+                     .with_vtk());
 }
 
 } // namespace softgrain

@@ -3,8 +3,10 @@
 #include "core/errors.hpp"
 #include "dpm/compress.hpp"
 #include "dpm/system.hpp"
+#include "dpm/vtk_frames.hpp"
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
+#include "spd/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,30 +32,43 @@ spd::RingSetup spd_setup(const RingComparisonSetup& c)
     return s;
 }
 
-RingComparison compress_spd(const RingComparisonSetup& c, const std::function<void(double)>& progress)
+// The observables of a recorded SPD state; B the bending rigidity.
+RingObservation spd_observation(const RingComparisonSetup& c, double B, const spd::CompressionState& st)
+{
+    // profile_x spans the top-wall contact from its leftmost to its rightmost touching vertex.
+    const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
+    const double contact = st.profile_x.empty() ? 0.0 : *hi - *lo;
+    return {st.strain, st.wall_force * c.radius * c.radius / B, st.width, st.volume,
+            contact / (2 * c.radius)};
+}
+
+RingComparison compress_spd(const RingComparisonSetup& c, const std::function<void(double)>& progress,
+                            const RingFrameObserver& frame)
 {
     const spd::RingSetup setup = spd_setup(c);
     const spd::RingScales sc = spd::ring_scales(setup);
-    const spd::CompressionResult r =
-        spd::ring_compression(setup, c.strain_max, c.strain_step, false, c.relax_tolerance, progress);
+    const double B = sc.flexural_rigidity;
+    spd::CompressionObserver observe;
+    if (frame)
+        observe = [&](const spd::RingBetweenWalls& w, const spd::CompressionState& st) {
+            frame(spd_observation(c, B, st),
+                  spd::shell_frame(w.model, {w.ring}, {w.bottom_wall, w.top_wall}));
+        };
+    const spd::CompressionResult r = spd::ring_compression(setup, c.strain_max, c.strain_step, false,
+                                                           c.relax_tolerance, progress, observe);
     RingComparison out;
-    out.bending_rigidity = sc.flexural_rigidity;
+    out.bending_rigidity = B;
     out.steps = r.steps;
     out.dt = r.dt;
     out.dt_critical = r.dt_critical;
     out.dt_stable = spd::ring_between_walls(setup).model.stable_time_step();
-    const double b0 = 2 * c.radius;
-    for (const spd::CompressionState& st : r.states) {
-        // profile_x spans the top-wall contact from its leftmost to its rightmost touching vertex.
-        const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
-        const double contact = st.profile_x.empty() ? 0.0 : *hi - *lo;
-        out.states.push_back({st.strain, st.wall_force * c.radius * c.radius / out.bending_rigidity, st.width,
-                              st.volume, contact / b0});
-    }
+    for (const spd::CompressionState& st : r.states)
+        out.states.push_back(spd_observation(c, B, st));
     return out;
 }
 
-RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<void(double)>& progress)
+RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<void(double)>& progress,
+                            const RingFrameObserver& frame)
 {
     // The same constants as the SPD ring (decision compare-ring-mapping).
     const spd::RingScales sc = spd::ring_scales(spd_setup(c));
@@ -109,6 +124,9 @@ RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<vo
         const double contact = cmax > cmin ? cmax - cmin : 0.0;
         out.states.push_back({sample.delta_over_d * D / b0, sample.force * R * R / out.bending_rigidity,
                               (xmax - xmin) / b0, dpm::particle_area(y, 0, n) / A0, contact / b0});
+        if (frame)
+            frame(out.states.back(), {{"particles", dpm::dpm_particles(system, y)},
+                                      {"plates", dpm::plates(xmin - sigma, xmax + sigma, 0.0, top)}});
         progress(static_cast<double>(out.states.size()) / schedule.compressions.size());
     };
     try {
@@ -129,7 +147,8 @@ RingMethod ring_method_from_name(const std::string& name)
     throw InputError("model = '" + name + "': allowed spd | dpm");
 }
 
-RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress)
+RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress,
+                             const RingFrameObserver& frame)
 {
     if (setup.nodes % 4 != 0)
         throw InputError("nodes = " + std::to_string(setup.nodes) +
@@ -142,7 +161,8 @@ RingComparison compress_ring(const RingComparisonSetup& setup, const std::functi
     if (!whole(setup.strain_max / setup.strain_step))
         throw InputError("strain_max = " + std::to_string(setup.strain_max) +
                          ": allowed a whole multiple of strain_step = " + std::to_string(setup.strain_step));
-    return setup.method == RingMethod::spd ? compress_spd(setup, progress) : compress_dpm(setup, progress);
+    return setup.method == RingMethod::spd ? compress_spd(setup, progress, frame)
+                                           : compress_dpm(setup, progress, frame);
 }
 
 RingErrors elastica_errors(const RingObservation& o)

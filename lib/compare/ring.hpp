@@ -17,6 +17,8 @@
 // touch the top plate (the elastica: the flat length 2c).
 #pragma once
 
+#include "core/vtk.hpp"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -57,9 +59,15 @@ struct RingComparison
     double dt = 0, dt_critical = 0, dt_stable = 0;
 };
 
+// Sees each recorded state (eps = 0, strain_step, ...) with its datasets for ParaView (`run --vtk`): SPD the
+// ring, the walls and the contacts (spd::shell_frame: "particles", "walls", "contacts"); DPM the shell
+// (dpm::dpm_particles: "particles") and the plates (dpm::plates: "plates", bottom at y = 0).
+using RingFrameObserver = std::function<void(const RingObservation&, std::vector<vtk::Part>)>;
+
 // Runs the compression; progress(fraction) after each strain increment. Throws NumericalError (exit 3) when
 // a relaxation fails or the SPD time step is above its stability limit.
-RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress);
+RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress,
+                             const RingFrameObserver& frame = {});
 
 // Deviations from the elastica at the observation's strain: relative in F and a, absolute in V/V0 and
 // L_c/b0.

@@ -171,7 +171,9 @@ void check_vtk_request(const Scene& scene, const VtkRequest& asked, const SceneR
     std::string allowed;
     for (const auto& s : scenes.all())
         if (s.vtk) allowed += (allowed.empty() ? "" : ", ") + s.name;
-    throw InputError("--vtk: scene '" + scene.name + "' writes no VTK frames yet; allowed for: " + allowed);
+    const std::string why = scene.no_vtk_reason.empty() ? " yet" : ": " + scene.no_vtk_reason;
+    throw InputError("--vtk: scene '" + scene.name + "' writes no VTK frames" + why +
+                     "; allowed for: " + allowed);
 }
 
 // Every rank of an MPI run runs the scene (ensembles spread their members over the ranks, core/ensemble.hpp)

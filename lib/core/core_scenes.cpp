@@ -67,9 +67,12 @@ void run_harmonic(const HarmonicOptions& options, RunContext& context)
 
 void register_core_scenes(SceneRegistry& registry)
 {
-    registry.add(bound_scene(
-        "core.harmonic", "mass on a linear spring, velocity Verlet: period and energy error against theory",
-        harmonic_binding(), run_harmonic));
+    registry.add(
+        bound_scene("core.harmonic",
+                    "mass on a linear spring, velocity Verlet: period and energy error against theory",
+                    harmonic_binding(), run_harmonic)
+            .without_vtk("a single mass on a spring, no particle to draw (its trajectory is in "
+                         "harmonic.dat)"));
 }
 
 } // namespace softgrain

@@ -33,6 +33,8 @@ struct Scene
     std::optional<SweepTable> sweep = std::nullopt;
     // The scene writes ParaView frames with `run --vtk` (RunContext::vtk).
     bool vtk = false;
+    // Why a scene writes no frames by design (empty: none yet), for the refusal of `run --vtk`.
+    std::string no_vtk_reason = {};
 
     // This scene with its memory estimate: registry.add(Scene{...}.needing(estimate)).
     Scene needing(std::function<MemoryEstimate(const Parameters&)> estimate) &&
@@ -50,6 +52,12 @@ struct Scene
     Scene with_vtk() &&
     {
         vtk = true;
+        return std::move(*this);
+    }
+    // This scene, refusing `run --vtk` for a reason: registry.add(Scene{...}.without_vtk("a timed scene")).
+    Scene without_vtk(std::string reason) &&
+    {
+        no_vtk_reason = std::move(reason);
         return std::move(*this);
     }
 };

@@ -127,7 +127,9 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "protocol, and of its dense spectrum: time, FIRE iterations, force evaluations per "
                        "second (make bench)",
                        dpm::bench_parameters(), dpm::run_bench}
-                     .needing(dpm::bench_memory));
+                     .needing(dpm::bench_memory)
+                     .without_vtk("a timed scene: writing frames would change the time it measures; "
+                                  "dpm.jam and dpm.modes3d draw the packings it times"));
     registry.add(Scene{"dpm.rearrangement",
                        "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",
@@ -189,7 +191,8 @@ void register_dpm_scenes(SceneRegistry& registry)
     registry.add(Scene{"dpm.shape3d",
                        "DPM sec. 9.3.1: closed triangulated meshes (Platonic solids, geodesic icosahedra), "
                        "Euler counts and the 3D shape parameter A^3D",
-                       dpm::shape3d_parameters(), dpm::run_shape3d});
+                       dpm::shape3d_parameters(), dpm::run_shape3d}
+                     .with_vtk());
     registry.add(Scene{"dpm.modes3d",
                        "DPM eq. (9.2), (9.28): eigenvalues of the dynamical matrix of a single 3D floppy / "
                        "shell / surface-tension particle and its zero modes (Fig. 9.15a), or of a jammed "
@@ -212,7 +215,8 @@ void register_dpm_scenes(SceneRegistry& registry)
                        "surface-tension particles from Lees-Edwards strain steps against pressure, fitted "
                        "exponents of G ~ P^eta (Fig. 9.16b)",
                        dpm::shear_modulus3d_parameters(), dpm::run_shear_modulus3d}
-                     .needing([](const Parameters& p) { return packing3d_memory(p, 1); }));
+                     .needing([](const Parameters& p) { return packing3d_memory(p, 1); })
+                     .with_vtk());
     registry.add(Scene{"dpm.slump",
                        "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, "
                        "right wall removed; run-out, angle of repose, layers at the front",
@@ -224,7 +228,8 @@ void register_dpm_scenes(SceneRegistry& registry)
               "DPM sec. 9.3.2 in 3D: a rigid 3D particle slid over a flat slab at fixed height, "
               "energy and F_x/F_z along the path for rough (vertex spheres) and smooth (vertex-face) "
               "contacts",
-              dpm::slide3d_parameters(), dpm::run_slide3d});
+              dpm::slide3d_parameters(), dpm::run_slide3d}
+            .with_vtk());
 }
 
 } // namespace softgrain

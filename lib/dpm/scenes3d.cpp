@@ -60,6 +60,19 @@ void run_shape3d(const Parameters& p, RunContext& context)
         *std::max_element(areas.begin(), areas.end()) / *std::min_element(areas.begin(), areas.end());
     s["bending_angle_min"] = *std::min_element(angles.begin(), angles.end());
     s["bending_angle_max"] = *std::max_element(angles.begin(), angles.end());
+    // ParaView: one frame (time value 0) of the bare mesh on the unit sphere (no vertex spheres: radius 0;
+    // no energy: force 0; volume_ratio 1), with each face's area a_f of faces.dat as cell data face_area and
+    // the summary's shape parameter, volume and surface as field data.
+    if (auto* series = context.vtk()) {
+        vtk::PolyData particle =
+            mesh_particles({MeshParticle{&mesh, 0, 0.0, volume, Eigen::Vector3d::Zero()}}, x,
+                           Eigen::VectorXd::Zero(x.size()));
+        particle.cell_scalars("face_area", areas);
+        particle.field("shape_parameter", shape_parameter3d(surface, volume));
+        particle.field("volume", volume);
+        particle.field("surface_area", surface);
+        series->write(0.0, {{"particles", std::move(particle)}});
+    }
 }
 
 std::vector<ParameterSpec> shape3d_parameters()

@@ -11,7 +11,9 @@
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
 #include "dpm/shear_modulus_ensemble.hpp"
+#include "dpm/vtk_frames.hpp"
 
+#include <optional>
 #include <string>
 
 namespace softgrain::dpm {
@@ -51,6 +53,27 @@ void check_A0_floppy(const Parameters& p)
                          std::to_string(A_min) + "; allowed: a real number >= it");
 }
 
+// ParaView frames of one packing: at each pressure state (time value: its index, P_t first) the relaxed
+// packing before it is sheared (the strain steps of 5e-9 would not show) and its box; field data pressure
+// and phi (as modulus_<model>.dat) and G, the modulus measured there.
+void write_pressure_frames(const Jam3dResult& packing, const ModulusMember& measured, vtk::Series& series)
+{
+    DpmSystem3d system = packing.system;
+    for (std::size_t l = 0; l < packing.states.size(); ++l) {
+        if (!series.next()) continue;
+        const Jam3dState& state = packing.states[l];
+        *system.box = state.box;
+        std::vector<vtk::Part> parts{{"particles", dpm_particles3d(system, state.x)},
+                                     {"box", box_outline3d(state.box)}};
+        for (vtk::Part& part : parts) {
+            part.data.field("pressure", measured.pressure[l]);
+            part.data.field("phi", measured.phi[l]);
+            part.data.field("G", measured.modulus[l]);
+        }
+        series.write(static_cast<double>(l), parts);
+    }
+}
+
 } // namespace
 
 void run_shear_modulus3d(const Parameters& p, RunContext& context)
@@ -66,7 +89,10 @@ void run_shear_modulus3d(const Parameters& p, RunContext& context)
     const double tolerance = p.real("force_tolerance");
 
     // Every (model, packing) pair is an independent member, run in parallel: packing k of every model starts
-    // from the same seed, seed + k (the same random centres and orientations).
+    // from the same seed, seed + k (the same random centres and orientations). With --vtk, member 0 (the
+    // first packing of the first model, always on the first rank, which writes) keeps its packing for the
+    // frames, written once every member is done.
+    std::optional<Jam3dResult> drawn;
     const std::vector<ModulusMember> all =
         run_ensemble<ModulusMember>(packings * static_cast<int>(models.size()), [&](int i) {
             Jam3dOptions mine = o;
@@ -75,8 +101,10 @@ void run_shear_modulus3d(const Parameters& p, RunContext& context)
             const Jam3dResult r = jam3d(mine);
             ModulusMember m = moduli_at_states(r.system, r.states, r.pressure_unit, dgamma, steps, tolerance);
             m.fire_iterations = r.fire_iterations;
+            if (i == 0 && context.vtk()) drawn = r;
             return m;
         });
+    if (drawn) write_pressure_frames(*drawn, all.front(), *context.vtk());
     auto& s = context.summary();
     s["packings"] = packings;
     s["particles"] = o.particles;

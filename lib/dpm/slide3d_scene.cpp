@@ -15,6 +15,7 @@
 #include "core/output.hpp"
 #include "dpm/interactions3d.hpp"
 #include "dpm/system3d.hpp"
+#include "dpm/vtk_frames.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -40,6 +41,30 @@ PathPoint evaluate(DpmSystem3d& s, InteractionKind kind, const Eigen::VectorXd& 
     const Particle3d& slider = s.particles[1];
     out.force = -g.segment(3 * slider.first, 3 * slider.count).reshaped(3, slider.count).rowwise().sum();
     return out;
+}
+
+// ParaView: the slab (particle_id 0) and the slider (1) as their meshes at one position of the path, force
+// -dU/dx of the smooth interaction (the slab's force on the slider's vertices and back), volume_ratio 1 (both
+// rigid: v0 their own volume); field data x (the slider centre), U and F_x/F_z of both interactions.
+std::vector<vtk::Part> slide_frame(const DpmSystem3d& s, const Eigen::VectorXd& x, double along,
+                                   const PathPoint& rough, const PathPoint& smooth)
+{
+    DpmSystem3d contact = s;
+    contact.interaction = InteractionKind::smooth;
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+    interaction_energy3d(contact, x, &gradient, nullptr);
+    std::vector<MeshParticle> bodies;
+    for (const Particle3d& p : s.particles) {
+        const TriangleMesh& mesh = s.meshes[static_cast<std::size_t>(p.mesh)];
+        bodies.push_back({&mesh, p.first, p.sigma, mesh_volume(mesh, x, p.first), Eigen::Vector3d::Zero()});
+    }
+    vtk::PolyData particles = mesh_particles(bodies, x, gradient);
+    particles.field("x", along);
+    particles.field("U_rough", rough.energy);
+    particles.field("U_smooth", smooth.energy);
+    particles.field("mu_rough", rough.force.x() / rough.force.z());
+    particles.field("mu_smooth", smooth.force.x() / smooth.force.z());
+    return {{"particles", std::move(particles)}};
 }
 
 // (max - min)/mean of a series (0 for a constant one).
@@ -126,6 +151,9 @@ void run_slide3d(const Parameters& p, RunContext& context)
         smooth_fz.push_back(m.force.z());
         table.row({along, r.energy, m.energy, half, m.energy - half, r.force.x() / r.force.z(),
                    m.force.x() / m.force.z()});
+        // ParaView: every 10th position (--vtk-every N: every N-th), time value x [sigma].
+        if (context.vtk() && context.vtk()->next(10))
+            context.vtk()->write(along, slide_frame(s, x, along, r, m));
     }
     auto& out = context.summary();
     out["rough_corrugation"] = corrugation(rough);

@@ -85,6 +85,18 @@ void run_approach(const Parameters& p, RunContext& context)
     }
     context.count_steps(run.steps);
     const ApproachAnalysis an = analyse_approach(problem, run.samples, p.real("regime_width"));
+    // ParaView frames, one per row of approach.dat (--vtk-every N: every N-th), time value t in R/V as there:
+    // the two spheres and their pair, field data time t [s] and gap_min h [m].
+    if (auto* series = context.vtk())
+        for (const ApproachSample& s : run.samples) {
+            if (!series->next()) continue;
+            std::vector<vtk::Part> parts = approach_frame(problem, s);
+            for (auto& part : parts) {
+                part.data.field("time", s.t);
+                part.data.field("gap_min", s.h);
+            }
+            series->write(s.t * kappa, parts);
+        }
 
     auto& table = context.table(
         "approach.dat",
@@ -441,7 +453,8 @@ void register_sd_scenes(SceneRegistry& registry)
     registry.add(Scene{"sd.approach",
                        "two lubricated elastic spheres under constant force: delta(h), h-dot(h), local "
                        "exponents (SD Fig. 3)",
-                       approach, run_approach});
+                       approach, run_approach}
+                     .with_vtk());
 
     std::vector<ParameterSpec> diagram{
         ParameterSpec::real("kappa_min", 1e-6, "1", "smallest kappa (the paper: 1e-6)").positive(),
@@ -455,7 +468,9 @@ void register_sd_scenes(SceneRegistry& registry)
     registry.add(
         Scene{"sd.phase_diagram",
               "regimes crossed by constant-kappa approaches and the Poiseuille-Hertz crossover (SD Fig. 3b)",
-              diagram, run_phase_diagram});
+              diagram, run_phase_diagram}
+            .without_vtk("a sweep of independent approaches over kappa, each ending at h = h_min: not a "
+                         "time series; draw one approach with sd.approach --set kappa=K --vtk"));
 
     registry.add(Scene{
         "sd.many",

@@ -59,4 +59,27 @@ std::vector<vtk::Part> many_particle_frame(const ManyParticleSystem& system, con
     return {{"particles", std::move(particles)}, {"pairs", std::move(pairs)}};
 }
 
+std::vector<vtk::Part> approach_frame(const ApproachProblem& problem, const ApproachSample& sample)
+{
+    ManyParticleSystem pair;
+    pair.material = problem.material;
+    pair.laws = problem.laws;
+    pair.dimension = 1;
+    pair.bonds = {{0, 1}};
+    const double force = sample.F_ext;
+    pair.external = [force](double, std::vector<double>& external, std::vector<double>& rate) {
+        external = {force, -force};
+        rate.assign(external.size(), 0.0); // not drawn
+    };
+    ManySample state;
+    state.t = sample.t;
+    state.positions = {-0.5 * sample.X, 0.5 * sample.X};
+    state.gaps = {sample.h};
+    state.rates.velocity = {-0.5 * sample.rates.X_dot, 0.5 * sample.rates.X_dot};
+    state.rates.gap_rate = {sample.rates.h_dot};
+    state.rates.pair_force = {sample.rates.F_ela};
+    state.rates.deflection = {sample.rates.delta};
+    return many_particle_frame(pair, state);
+}
+
 } // namespace softgrain::sd

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/vtk.hpp"
+#include "sd/approach.hpp"
 #include "sd/many.hpp"
 
 #include <vector>
@@ -15,5 +16,9 @@
 namespace softgrain::sd {
 
 std::vector<vtk::Part> many_particle_frame(const ManyParticleSystem& system, const ManySample& sample);
+
+// A sample of the pair approach (sd.approach) as the frame of two particles on the x axis with centres at
+// -X/2 and X/2 (the pair's centre at rest), each pushed toward the other by F_ext: velocities -+X-dot/2.
+std::vector<vtk::Part> approach_frame(const ApproachProblem& problem, const ApproachSample& sample);
 
 } // namespace softgrain::sd

@@ -317,7 +317,9 @@ void register_spd_assembly_scenes(SceneRegistry& registry)
             "spd.bench",
             "SPD speed: elastic rings colliding in a box; vertex-steps per second of the time-step loop",
             bench_binding(), run_bench)
-            .needing(rings_memory));
+            .needing(rings_memory)
+            .without_vtk("a timed scene: writing frames would change the time it measures; "
+                         "spd.compaction draws colliding rings"));
     Scene compaction = bound_scene(
         "spd.compaction",
         "SPD section 5: uniaxial compaction and unloading of polydisperse frictionless core-shell "

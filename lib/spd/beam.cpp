@@ -43,7 +43,8 @@ double beam_discrete_ratio(BeamSupport support, int nodes)
     return support == BeamSupport::cantilever ? (n + 1) * (2 * n + 1) / (2 * n * n) : 1.0 + 2.0 / (n * n);
 }
 
-BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_tolerance_relative)
+BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_tolerance_relative,
+                         const BeamObserver& observe)
 {
     const bool cantilever = setup.support == BeamSupport::cantilever;
     if (setup.nodes < 3)
@@ -84,7 +85,14 @@ BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_
 
     model.set_applied_force(load, Vec2(0.0, -setup.force));
     const long max_steps = static_cast<long>(200.0 * 2 * std::numbers::pi / (omega1 * r.dt)) + 10000;
-    r.steps = relax(model, r.dt, 2.0 * m * omega1, force_tolerance_relative * setup.force, max_steps);
+    std::function<void(long)> after_check;
+    if (observe) {
+        observe(model, 0, false);
+        after_check = [&](long n) { observe(model, n, false); };
+    }
+    r.steps = relax(model, r.dt, 2.0 * m * omega1, force_tolerance_relative * setup.force, max_steps, 0,
+                    after_check);
+    if (observe) observe(model, r.steps, true);
     for (int k = 0; k < setup.nodes; ++k) {
         r.x.push_back(model.vertex(ghost + k).x());
         r.deflection.push_back(-model.vertex(ghost + k).y());

@@ -9,6 +9,7 @@
 
 #include "spd/calibration.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,12 +55,19 @@ struct BeamResult
     long steps = 0;
 };
 
+class ShellModel;
+// Sees the beam (shell 0; the cantilever's clamp ghost node first) during the relaxation: at step 0 with the
+// load applied, after each unsuccessful force check (every 16 steps) and, with relaxed = true, at the end.
+using BeamObserver = std::function<void(const ShellModel& model, long step, bool relaxed)>;
+
 // Relaxes the loaded beam with damped velocity Verlet (dt = dt_factor dt_c, damping critical for the
 // fundamental mode) until the largest unbalanced force is below force_tolerance_relative * F. The residual
 // deflection error grows with N (1e-5 F leaves 4e-4 at N = 129, 1e-6 F leaves 5e-5); the floor is the
 // round-off accumulated by the incremental laws (~7e-7 F at N = 129, h = 0.05 m), hence the default 1e-6,
 // valid up to N ~ 129 for such beams (a thinner or finer beam may need a larger value).
+constexpr double beam_force_tolerance_relative = 1e-6;
 BeamResult simulate_beam(const BeamSetup& setup, double dt_factor = 0.5,
-                         double force_tolerance_relative = 1e-6);
+                         double force_tolerance_relative = beam_force_tolerance_relative,
+                         const BeamObserver& observe = {});
 
 } // namespace softgrain::spd

@@ -52,7 +52,8 @@ int add_ring(ShellModel& model, const RingSetup& setup, double pressure_applied)
     return model.add_shell(vertices, ring, setup.vertex_mass);
 }
 
-RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure)
+RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure,
+                                       const std::function<void(const ShellModel&, int ring)>& relaxed)
 {
     const RingScales sc = ring_scales(setup);
     ShellModel model;
@@ -70,6 +71,7 @@ RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure)
     r.steps = relax(model, dt, damping, tolerance, 5'000'000);
     r.volume_strain = model.area(ring) / A0 - 1.0;
     r.K_measured = pressure / r.volume_strain;
+    if (relaxed) relaxed(model, ring);
     return r;
 }
 

@@ -54,7 +54,9 @@ struct RingPressureResult
     double K_measured, volume_strain;
     long steps;
 };
-RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure);
+// relaxed, if given, sees the relaxed ring (shell `ring` of the model).
+RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure,
+                                       const std::function<void(const ShellModel&, int ring)>& relaxed = {});
 
 // One recorded state of the compression-decompression cycle.
 struct CompressionState

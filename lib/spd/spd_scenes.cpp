@@ -49,7 +49,20 @@ void run_beam(const Parameters& p, RunContext& context)
                          ": the point-load theory is linear; allowed: a force "
                          "giving delta_max < 0.01 length (here " +
                          std::to_string(theory / b.length) + " length)");
-    const BeamResult r = simulate_beam(b, p.real("dt_factor"));
+    // ParaView frames of the damped relaxation, in which the beam settles from straight into its deflected
+    // shape: the load applied (step 0), every 1000th force check (16 000 steps; --vtk-every N: every N-th
+    // check, 16 N steps) and always the relaxed state, the one profile.dat lists. Time value: the step.
+    const BeamObserver frame = [&](const ShellModel& model, long step, bool relaxed) {
+        vtk::Series& series = *context.vtk();
+        if (!relaxed && !series.next(1000)) return;
+        vtk::PolyData beam = shell_walls(model, {0});
+        beam.field("force", b.force);
+        beam.field("step", static_cast<double>(step));
+        beam.field("relaxed", relaxed ? 1.0 : 0.0);
+        series.write(static_cast<double>(step), {{"beam", std::move(beam)}});
+    };
+    const BeamResult r = simulate_beam(b, p.real("dt_factor"), beam_force_tolerance_relative,
+                                       context.vtk() ? frame : BeamObserver{});
     context.count_steps(r.steps);
     auto& profile =
         context.table("profile.dat", {{"x_over_L", "1", "node position x/L"},
@@ -96,8 +109,23 @@ void run_ring_pressure(const Parameters& p, RunContext& context)
     const RingScales sc = ring_scales(setup);
     RingSetup shell_only = setup;
     shell_only.eta = 0;
-    const RingPressureResult shell = ring_under_pressure(shell_only, pressure);
-    const RingPressureResult total = ring_under_pressure(setup, pressure);
+    // ParaView frames, one per pressure state: the relaxed ring without its core (eta = 0, state 0; K_shell)
+    // and with it (state 1; K_e). Time value: the state index; field data pressure [Pa] and eta.
+    const auto frame = [&](double eta, double state) {
+        return [&context, eta, state, pressure](const ShellModel& model, int ring) {
+            if (!context.vtk()->next()) return;
+            vtk::PolyData particles = shell_particles(model, {ring});
+            particles.field("state", state);
+            particles.field("pressure", pressure);
+            particles.field("eta", eta);
+            context.vtk()->write(state, {{"particles", std::move(particles)}});
+        };
+    };
+    using Relaxed = std::function<void(const ShellModel&, int)>;
+    const RingPressureResult shell =
+        ring_under_pressure(shell_only, pressure, context.vtk() ? frame(0.0, 0) : Relaxed{});
+    const RingPressureResult total =
+        ring_under_pressure(setup, pressure, context.vtk() ? frame(setup.eta, 1) : Relaxed{});
     context.count_steps(shell.steps + total.steps);
     auto& s = context.summary();
     s["K_shell"] = shell.K_measured;
@@ -442,14 +470,16 @@ void register_spd_scenes(SceneRegistry& registry)
               beam, run_beam}
             .needing([](const Parameters& p) {
                 return spd::shell_model_memory(double(p.integer("nodes")), "vertices (nodes)");
-            }));
+            })
+            .with_vtk());
     registry.add(Scene{
         "spd.ring_pressure",
         "SPD eqs. (19)-(25): ring under small internal pressure; K_shell and K_e against theory",
         ring_parameters(
             {ParameterSpec::real("pressure", 0.05, "Pa", "applied internal pressure (small)").positive()}),
         run_ring_pressure}
-                     .needing(ring_memory));
+                     .needing(ring_memory)
+                     .with_vtk());
     registry.add(Scene{
         "spd.ring_compression",
         "SPD section 4: quasi-static diametral compression of a ring between rigid walls, with the elastica "

@@ -15,7 +15,7 @@ Mat3 patch_displacement_gradient(double alpha)
     return alpha * M;
 }
 
-PatchResult run_patch_test(const PatchSetup& s)
+PatchResult run_patch_test(const PatchSetup& s, const PatchObserver& observe)
 {
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Ones());
     Rng rng(s.seed);
@@ -51,14 +51,23 @@ PatchResult run_patch_test(const PatchSetup& s)
     const auto max_column_norm = [](const Points<3>& p) { return p.colwise().norm().maxCoeff(); };
     if (static_test) {
         result.max_error = max_column_norm(model.forces(exact, 0.0));
+        if (observe) observe({model, exact, Points<3>::Zero(3, X.cols()), 0.0, 0, 1.0, true});
         return result;
     }
     const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
     Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, s.damping,
                         s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     const long steps = static_cast<long>(std::ceil((s.ramp_time + s.hold_time) / dt));
-    for (long k = 0; k < steps; ++k)
+    const auto state = [&](bool final) {
+        const double t = integrator.state().t;
+        observe({model, integrator.positions(), integrator.half_step_velocities(), t, integrator.state().step,
+                 ramp(t), final});
+    };
+    if (observe) state(false);
+    for (long k = 0; k < steps; ++k) {
         integrator.step();
+        if (observe) state(k + 1 == steps);
+    }
     const Points<3> x = integrator.positions();
     result.max_error = max_column_norm(x - exact);
     result.final_residual = max_column_norm(model.forces(x, integrator.state().t));

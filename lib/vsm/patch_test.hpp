@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 
 namespace softgrain::vsm {
 
@@ -47,6 +48,21 @@ struct PatchResult
 
 Mat3 patch_displacement_gradient(double alpha); // alpha M of eq. (52)
 
-PatchResult run_patch_test(const PatchSetup& setup);
+// A state of a patch test for an observer: A's one state, the exact positions (t = 0, step 0, no velocity);
+// B and C the start and every time step, leapfrog's half-step velocities. load: the ramp r(t) in [0, 1]
+// (the exact solution is X + r alpha M X); final: the state whose error the result reports.
+struct PatchState
+{
+    const Model& model;
+    const Points<3>& x;
+    const Points<3>& v;
+    double t = 0;
+    long step = 0;
+    double load = 1;
+    bool final = false;
+};
+using PatchObserver = std::function<void(const PatchState&)>;
+
+PatchResult run_patch_test(const PatchSetup& setup, const PatchObserver& observe = {});
 
 } // namespace softgrain::vsm

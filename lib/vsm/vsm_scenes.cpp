@@ -81,7 +81,16 @@ void run_patch(const Parameters& p, RunContext& context)
     s.time_step_check = p.boolean("time_step_check");
     s.damping = p.real("damping");
     context.record_seed(s.seed);
-    const PatchResult r = run_patch_test(s);
+    // ParaView frames (time value t [s], field data load r(t) and test 1 A, 2 B, 3 C): test A has one state,
+    // the exact positions at which it measures the forces; B and C every 1000 time steps of the ramp and hold
+    // (--vtk-every N: every N steps) and always the final state, whose error the summary reports.
+    const PatchObserver frame = [&](const PatchState& q) {
+        if (!q.final && !context.vtk()->due(q.step, 1000)) return;
+        context.vtk()->write(q.t,
+                             vsm_frame(q.model, q.x, q.v, q.t, q.step,
+                                       {{"load", q.load}, {"test", static_cast<double>(s.variant) + 1}}));
+    };
+    const PatchResult r = run_patch_test(s, context.vtk() ? frame : PatchObserver{});
     // Test A's error is relative to the particle force E alpha h^2: when that under- or overflows (e.g.
     // E = 4.9e-324 Pa) there is no error to measure, only 0/0.
     if (s.variant == PatchVariant::A && !(r.force_scale > 0 && std::isfinite(r.force_scale)))
@@ -362,7 +371,8 @@ void register_vsm_scenes(SceneRegistry& registry)
                      .needing([](const Parameters& p) {
                          return vsm_particle_memory(cube(double(p.integer("per_side"))),
                                                     "particles (per_side^3)");
-                     }));
+                     })
+                     .with_vtk());
     registry.add(Scene{
         "vsm.swinging_cube",
         "VSM swinging cube (Frenning Fig. 5): displacement error against the linear solution eq. (53) at t = "

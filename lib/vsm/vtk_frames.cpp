@@ -76,14 +76,19 @@ vtk::PolyData vsm_walls(const Model& model, double t)
 std::vector<vtk::Part> vsm_frame(const Model& model, const Leapfrog& integrator,
                                  const std::vector<std::pair<std::string, double>>& fields)
 {
-    const double t = integrator.state().t;
-    std::vector<vtk::Part> parts{
-        {"particles", vsm_particles(model, integrator.positions(), integrator.half_step_velocities(), t)}};
+    return vsm_frame(model, integrator.positions(), integrator.half_step_velocities(), integrator.state().t,
+                     integrator.state().step, fields);
+}
+
+std::vector<vtk::Part> vsm_frame(const Model& model, const Points<3>& x, const Points<3>& v, double t,
+                                 long step, const std::vector<std::pair<std::string, double>>& fields)
+{
+    std::vector<vtk::Part> parts{{"particles", vsm_particles(model, x, v, t)}};
     vtk::PolyData walls = vsm_walls(model, t);
     if (walls.cells() > 0) parts.push_back({"walls", std::move(walls)});
     for (vtk::Part& part : parts) {
         part.data.field("time", t);
-        part.data.field("step", static_cast<double>(integrator.state().step));
+        part.data.field("step", static_cast<double>(step));
         for (const auto& [name, value] : fields)
             part.data.field(name, value);
     }

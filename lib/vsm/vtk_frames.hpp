@@ -32,5 +32,8 @@ vtk::PolyData vsm_walls(const Model& model, double t);
 // time [s], step and the given fields on every part.
 std::vector<vtk::Part> vsm_frame(const Model& model, const Leapfrog& integrator,
                                  const std::vector<std::pair<std::string, double>>& fields = {});
+// The same at positions x, velocities v, time t and step (a state that no integrator holds: a static test).
+std::vector<vtk::Part> vsm_frame(const Model& model, const Points<3>& x, const Points<3>& v, double t,
+                                 long step, const std::vector<std::pair<std::string, double>>& fields = {});
 
 } // namespace softgrain::vsm

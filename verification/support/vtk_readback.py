@@ -20,6 +20,13 @@ run's tables and summary:
     momentum sum rho V v equals momentum.dat;
   - SD: sd.many on a line and in a cluster: gaps and velocities equal many.dat, |X_ij| = 2R + h - 2 delta
     (eq. 2);
+  - spd.beam: the relaxed nodes equal profile.dat, the deflection the discrete chain's; spd.ring_pressure:
+    area ratios against K_shell and K_e (eqs. (21), (25)); sd.approach: the pair against approach.dat, eq. (2)
+    and the force balance; vsm.patch A, B, C: displacements and walls against the linear field eq. (52);
+    compare.ring (SPD, DPM): widths and areas against ring.dat, the plate force against F R^2/B;
+    dpm.shape3d: face areas, Euler count, volume, A^3D; dpm.slide3d: the slider's path and F_x/F_z against
+    path.dat; dpm.shear_modulus3d: the first packing's phi from its meshes against modulus_shell.dat; the
+    refusals of the benches, core.harmonic and sd.phase_diagram name their reason;
   - 3D DPM: dpm.compress3d (tetrahedra, shell, spring network): delta/D and F equal force.dat, the mesh's
     vertex forces at the top plate sum to F, volume ratios; dpm.modes3d (4 shells): the particles whole in
     the box and phi;
@@ -1070,6 +1077,394 @@ def check_sd(softgrain, work):
     print("sd.many: frames of the line and the cluster match many.dat")
 
 
+def relatively_close(a, b, tol):
+    """|a - b| <= tol max(|a|, |b|): for values far below 1, which close() compares absolutely."""
+    return abs(a - b) <= tol * max(abs(a), abs(b))
+
+
+def check_beam(softgrain, work):
+    """spd.beam, cantilever and simply supported: frames along the damped relaxation (every 100th force check
+    here, 1600 steps) and the relaxed state, whose nodes are profile.dat's and whose largest deflection is
+    the discrete hinge chain's exact small-load result."""
+    every = 100
+    for support in ("cantilever", "simple"):
+        out = work / f"beam-{support}"
+        nodes, length = 11, 1.0
+        run(softgrain, out, "spd.beam", "--vtk", "--vtk-every", str(every), "--set", f"nodes={nodes}",
+            f"support={support}")
+        result = out / "spd.beam"
+        s = summary(result)
+        rows = table(result / "profile.dat")
+        series = read_series(result, "spd.beam")
+        # Opportunities: step 0 and each unsuccessful check (every 16 steps) before the converged one.
+        checks = s["steps"] // 16
+        expected = (checks + every - 1) // every + 1
+        check(len(series) == expected == s.get("vtk_frames"),
+              f"beam {support}: {len(series)} frames, expected {expected} for {s['steps']} steps")
+        ghost = 1 if support == "cantilever" else 0  # the clamp's frozen node at x = -l, drawn first
+        for k, frame in enumerate(series):
+            t, beam, _ = frame["beam"]
+            last = k == len(series) - 1
+            check(close(t, s["steps"] if last else 16 * every * k), f"beam {support} frame {k}: time {t}")
+            check(field(beam, "relaxed") == (1 if last else 0) and field(beam, "step") == t,
+                  f"beam {support} frame {k}: field data relaxed/step")
+            check(beam.GetNumberOfPoints() == nodes + ghost and beam.GetNumberOfLines() == 1,
+                  f"beam {support} frame {k}: {beam.GetNumberOfPoints()} points, {beam.GetNumberOfLines()} lines")
+        # The load is applied to the straight beam at step 0.
+        first = series[0]["beam"][1]
+        check(all(first.GetPoint(i)[1] == 0 for i in range(first.GetNumberOfPoints())),
+              f"beam {support}: frame 0 not straight")
+        # The relaxed state: each node at (x, -delta) of profile.dat (12 significant digits there).
+        relaxed = series[-1]["beam"][1]
+        for i, row in enumerate(rows):
+            x, y, _ = relaxed.GetPoint(ghost + i)
+            check(abs(x - row["x_over_L"] * length) <= 1e-11 and abs(-y - row["delta"]) <= 1e-11 * abs(row["delta"]),
+                  f"beam {support} node {i}: ({x}, {y}) against profile.dat ({row['x_over_L']}, {row['delta']})")
+        # The largest deflection against the small-load discrete chain (cantilever (n+1)(2n+1)/(2n^2), simply
+        # supported 1 + 2/n^2 times F L^3/(3 EI) or F L^3/(48 EI)); 1e-4: the relaxation residual 1e-6 F leaves
+        # < 5e-5 (lib/spd/beam.hpp), the geometric nonlinearity (delta/L)^2 < 1e-8.
+        deepest = max(-relaxed.GetPoint(i)[1] for i in range(relaxed.GetNumberOfPoints()))
+        ratio = deepest / s["deflection_max_theory"]
+        check(abs(ratio / s["ratio_discrete_theory"] - 1) <= 1e-4,
+              f"beam {support}: deflection {deepest} is {ratio} x theory, discrete chain {s['ratio_discrete_theory']}")
+    print("spd.beam: relaxation frames read back; the relaxed nodes equal profile.dat")
+
+
+def check_ring_pressure(softgrain, work):
+    """spd.ring_pressure with a compressible core: the relaxed ring without and with its core, area ratios
+    against the summary's moduli and the theory's K_shell (eq. (21)) and K_e (eq. (25))."""
+    out = work / "ring-pressure"
+    pressure, eta = 0.05, 2e4
+    run(softgrain, out, "spd.ring_pressure", "--vtk", "--set", "nodes=32", f"eta={eta}", f"pressure={pressure}")
+    result = out / "spd.ring_pressure"
+    s = summary(result)
+    series = read_series(result, "spd.ring_pressure")
+    check(len(series) == 2 == s.get("vtk_frames"), f"ring_pressure: {len(series)} frames, expected 2")
+    for k, (frame, measured, theory) in enumerate(zip(series, ("K_shell", "K_effective"),
+                                                       ("K_shell_theory", "K_effective_theory"))):
+        t, particles, _ = frame["particles"]
+        check(t == k and field(particles, "state") == k, f"ring_pressure frame {k}: time {t}")
+        check(field(particles, "pressure") == pressure and field(particles, "eta") == (0 if k == 0 else eta),
+              f"ring_pressure frame {k}: field data pressure, eta")
+        check(particles.GetNumberOfPolys() == 1 and particles.GetNumberOfPoints() == 32,
+              f"ring_pressure frame {k}: {particles.GetNumberOfPolys()} polygons")
+        strain = cell_values(particles, "area_ratio")[0] - 1
+        check(close(pressure / strain, s[measured], 1e-9),
+              f"ring_pressure frame {k}: p/(A/A0 - 1) = {pressure / strain} against {measured} {s[measured]}")
+        # Against the theory: 1e-5, the relaxation tolerance (1e-5 p s l0 on each vertex).
+        check(abs(pressure / strain / s[theory] - 1) <= 1e-5,
+              f"ring_pressure frame {k}: p/(A/A0 - 1) = {pressure / strain} against {theory} {s[theory]}")
+        # The uniform pressure excites only the breathing mode: the vertices stay on a circle.
+        points = [particles.GetPoint(i) for i in range(32)]
+        cx, cy = sum(p[0] for p in points) / 32, sum(p[1] for p in points) / 32
+        radii = [math.hypot(p[0] - cx, p[1] - cy) for p in points]
+        check(max(radii) - min(radii) <= 1e-9 * max(radii), f"ring_pressure frame {k}: not a circle")
+    core = cell_values(series[0]["particles"][1], "core_pressure")[0]
+    check(core == 0, f"ring_pressure frame 0: core pressure {core} without a core")
+    print("spd.ring_pressure: the two relaxed rings match K_shell and K_e")
+
+
+def check_approach(softgrain, work):
+    """sd.approach (every 4th row here): the two spheres and their pair against approach.dat, eq. (2) and
+    the force balance eq. (1)."""
+    out = work / "approach"
+    kappa, every = 1e-4, 4
+    run(softgrain, out, "sd.approach", "--vtk", "--vtk-every", str(every), "--set", f"kappa={kappa}")
+    result = out / "sd.approach"
+    rows = table(result / "approach.dat")
+    series = read_series(result, "sd.approach")
+    check(len(series) == (len(rows) + every - 1) // every == summary(result).get("vtk_frames"),
+          f"approach: {len(series)} frames for {len(rows)} rows every {every}")
+    # approach.dat has 12 significant digits: 1e-10 relative (h goes down to 1e-6 R).
+    same = lambda a, b: relatively_close(a, b, 1e-10)  # noqa: E731
+    for k, frame in enumerate(series):
+        row = rows[every * k]
+        t, particles, _ = frame["particles"]
+        _, pairs, _ = frame["pairs"]
+        label = f"approach frame {k}"
+        check(same(t, row["t"]) and same(field(particles, "time") * kappa, row["t"]), f"{label}: time {t}")
+        check(particles.GetNumberOfVerts() == 2 and pairs.GetNumberOfVerts() == 1, f"{label}: counts")
+        x0, x1 = particles.GetPoint(0), particles.GetPoint(1)
+        check(same(x1[0] - x0[0], row["X"]) and x0[0] == -x1[0] and x0[1] == x1[1] == 0,
+              f"{label}: centres {x0}, {x1} against X = {row['X']}")
+        h, delta = point_tuples(pairs, "gap")[0][0], point_tuples(pairs, "deflection")[0][0]
+        check(same(h, row["h"]) and same(delta, row["delta"]) and same(field(particles, "gap_min"), h),
+              f"{label}: gap {h}, deflection {delta} against {row['h']}, {row['delta']}")
+        # Eq. (2), R = 1: X = 2R + h - 2 delta.
+        check(close(x1[0] - x0[0], 2 + h - 2 * delta, 1e-12), f"{label}: eq. (2)")
+        v = point_tuples(particles, "velocity")
+        check(same((v[1][0] - v[0][0]) / kappa, row["X_dot"]) and same(point_tuples(pairs, "gap_rate")[0][0] / kappa,
+                                                                        row["h_dot"]),
+              f"{label}: velocities {v} against X-dot = {row['X_dot']} V")
+        # Eq. (1): F_ela balances F_ext = kappa E R^2, to the table's residual (12 digits there; the frame's
+        # F_ela/F_ext - 1 is known to a few ulp, 1e-15).
+        force = point_tuples(pairs, "force")[0][0]
+        residual = row["force_balance_residual"]
+        check(abs(abs(force / kappa - 1) - residual) <= 1e-10 * residual + 1e-15,
+              f"{label}: |F_ela/F_ext - 1| = {abs(force / kappa - 1)}, table {row['force_balance_residual']}")
+        pushed = point_tuples(particles, "external_force")
+        check(pushed[0][0] == kappa and pushed[1][0] == -kappa, f"{label}: external forces {pushed}")
+    print(f"sd.approach: {len(series)} frames match approach.dat")
+
+
+def check_refusal_reasons(softgrain, work):
+    """Scenes without frames by design say why: the timed benches, core.harmonic, sd.phase_diagram."""
+    for scene, words in (("spd.bench", ["timed scene"]), ("dpm.bench", ["timed scene"]),
+                         ("core.harmonic", ["no particle"]), ("sd.phase_diagram", ["not a time series"])):
+        done, _ = run(softgrain, work / "refused-reason", scene, "--vtk", expect=2)
+        check(all(w in done.stderr for w in ["--vtk", scene, "allowed for", *words]),
+              f"{scene} --vtk: message {done.stderr.strip()!r} lacks {words}")
+
+
+def check_patch(softgrain, work):
+    """vsm.patch: test A's one state and B, C along their ramp and hold (every 2000th step here) and their final
+    state: the displacement against the linear field u = r alpha M X of eq. (52), the walls moved by it."""
+    alpha = 1e-4
+    G = [[alpha * (3 * i + j + 1) for j in range(3)] for i in range(3)]  # alpha M, M = [1 2 3; 4 5 6; 7 8 9]
+    linear = lambda X, r: [r * sum(G[i][j] * X[j] for j in range(3)) for i in range(3)]  # noqa: E731
+    every, ramp = 2000, 5.0
+    for test in ("A", "B", "C"):
+        out = work / f"patch-{test}"
+        run(softgrain, out, "vsm.patch", "--vtk", "--vtk-every", str(every), "--set", f"test={test}",
+            f"ramp_time={ramp}", "hold_time=5")
+        result = out / "vsm.patch"
+        s = summary(result)
+        X = [(r["X1"], r["X2"], r["X3"]) for r in table(result / "particles.dat")]
+        series = read_series(result, "vsm.patch")
+        n = s["particles"]
+        steps = s["steps"]
+        # B, C: the steps 0, every, 2 every, ... and the final one.
+        expected = 1 if test == "A" else steps // every + 1 + (steps % every != 0)
+        check(len(series) == expected == s.get("vtk_frames"),
+              f"patch {test}: {len(series)} frames, expected {expected}")
+        u_max = math.sqrt(sum(sum(G[i]) ** 2 for i in range(3)))  # the largest exact displacement, X = (1, 1, 1)
+        for k, frame in enumerate(series):
+            t, particles, _ = frame["particles"]
+            _, walls, _ = frame["walls"]
+            label = f"patch {test} frame {k}"
+            final = k == len(series) - 1
+            step = steps if final and test != "A" else every * k
+            load = 1.0 if test == "A" else min(t / ramp, 1.0)
+            check(field(particles, "step") == step and close(t, step * (s["dt"] or 0), 1e-12),
+                  f"{label}: time {t}, step {field(particles, 'step')}, expected {step}")
+            check(field(particles, "test") == s["test_id"] and close(field(particles, "load"), load, 1e-12),
+                  f"{label}: field data test {field(particles, 'test')}, load {field(particles, 'load')}")
+            check_vsm_particles(particles, label, n, 1.0)
+            # Reference positions: x - u equals particles.dat (12 digits there).
+            u = point_tuples(particles, "displacement")
+            check(all(abs(particles.GetPoint(a)[i] - u[a][i] - X[a][i]) <= 1e-11 for a in range(n) for i in range(3)),
+                  f"{label}: x - displacement differs from particles.dat")
+            # The walls: total displacement on every face (A, B) or on X3 = 0 only (C), each corner W at
+            # W + r alpha M W.
+            kinds, labels = cell_values(walls, "boundary_kind"), cell_values(walls, "face_label")
+            check(kinds == [1] * (1 if test == "C" else 6) and (test != "C" or labels == [4]),
+                  f"{label}: walls {labels} of kinds {kinds}")
+            for c in range(walls.GetNumberOfPolys()):
+                cell = walls.GetCell(c)
+                for q in range(4):
+                    w = walls.GetPoint(cell.GetPointId(q))
+                    W = [round(coordinate) for coordinate in w]  # the unit cube's corners
+                    moved = linear(W, load)
+                    check(all(abs(w[i] - W[i] - moved[i]) <= 1e-15 for i in range(3)),
+                          f"{label}: wall {labels[c]} corner {w} not at W + r alpha M W")
+            if not final:
+                continue
+            # The final state against eq. (52): A exact (the positions it sets), B and C within their error.
+            deviation = max(math.dist([u[a][i] for i in range(3)], linear(X[a], 1.0)) for a in range(n))
+            allowed = 1e-12 * u_max + (0 if test == "A" else s["max_error"])
+            check(deviation <= allowed, f"{label}: displacement {deviation} m from alpha M X, allowed {allowed}")
+            # A's deformation gradient is the exact I + alpha M (eq. (6) reproduces linear fields).
+            if test == "A":
+                F = point_tuples(particles, "deformation_gradient")
+                check(all(abs(F[a][3 * i + j] - (i == j) - G[i][j]) <= 1e-12 for a in range(n)
+                          for i in range(3) for j in range(3)), f"{label}: F is not I + alpha M")
+    print("vsm.patch: tests A, B, C frames follow the linear field of eq. (52)")
+
+
+def check_compare_ring(softgrain, work):
+    """compare.ring by SPD and by DPM: a frame per recorded strain (eps = 0 and each row of ring.dat), the
+    ring's width and area ratio against the table, and its plate force from the frame against F R^2/B."""
+    nodes, h, E, nu, R = 32, 0.02, 1e6, 0.3, 1.0
+    l0 = 2 * R * math.sin(math.pi / nodes)
+    B = E * h ** 3 / (12 * (1 - nu ** 2)) * l0  # k_b l0, SPD eqs. (10)-(11) (decision compare-ring-mapping)
+    for model in ("spd", "dpm"):
+        out = work / f"compare-ring-{model}"
+        run(softgrain, out, "compare.ring", "--vtk", "--set", f"model={model}", f"nodes={nodes}", f"h_over_R={h}",
+            "strain_max=0.2", "strain_step=0.05")
+        result = out / "compare.ring"
+        rows = table(result / "ring.dat")
+        series = read_series(result, "compare.ring")
+        check(len(series) == len(rows) + 1 == summary(result).get("vtk_frames"),
+              f"compare.ring {model}: {len(series)} frames for {len(rows)} rows and eps = 0")
+        check(set(series[0]) == ({"particles", "walls", "contacts"} if model == "spd" else {"particles", "plates"}),
+              f"compare.ring {model}: parts {sorted(series[0])}")
+        for k, frame in enumerate(series):
+            t, particles, _ = frame["particles"]
+            label = f"compare.ring {model} frame {k}"
+            row = rows[k - 1] if k > 0 else {"eps": 0.0, "F_R2_over_B": None, "a_over_b0": 1.0, "V_over_V0": 1.0}
+            check(close(t, row["eps"], 1e-10) and close(field(particles, "strain"), row["eps"], 1e-10),
+                  f"{label}: time {t} against eps {row['eps']}")
+            check(particles.GetNumberOfPolys() == 1 and particles.GetNumberOfPoints() == nodes, f"{label}: counts")
+            xs = [particles.GetPoint(i)[0] for i in range(nodes)]
+            # ring.dat has 12 significant digits: 1e-10 relative.
+            check(close((max(xs) - min(xs)) / (2 * R), row["a_over_b0"], 1e-10),
+                  f"{label}: width {(max(xs) - min(xs)) / (2 * R)} against a/b0 {row['a_over_b0']}")
+            check(close(cell_values(particles, "area_ratio")[0], row["V_over_V0"], 1e-10),
+                  f"{label}: area ratio {cell_values(particles, 'area_ratio')[0]} against V/V0 {row['V_over_V0']}")
+            if k == 0:
+                continue
+            check(close(field(particles, "F_R2_over_B"), row["F_R2_over_B"], 1e-10), f"{label}: field F R^2/B")
+            if model == "spd":
+                # The top wall's force from the contact lines (as in check_ring).
+                _, walls, _ = frame["walls"]
+                _, contacts, _ = frame["contacts"]
+                top = cell_values(walls, "wall_id")[1]
+                mine, other = cell_values(contacts, "particle") or [], cell_values(contacts, "other_particle") or []
+                f = contacts.GetCellData().GetArray("force")
+                force = sum((-1 if other[c] == top else 1 if mine[c] == top else 0) * f.GetTuple3(c)[1]
+                            for c in range(contacts.GetNumberOfLines()))
+                check(close(force * R ** 2 / B, row["F_R2_over_B"], 1e-9),
+                      f"{label}: top-wall force {force * R ** 2 / B} B/R^2 against {row['F_R2_over_B']}")
+            else:
+                # The top plate at D - delta = 2R + h - eps b0; the body's vertex forces where it touches
+                # balance F, to FIRE's tolerance: its rms force below 1e-5 B/R^2 / sqrt(2N) bounds the sum over
+                # k touching vertices by sqrt(k) 1e-5 B/R^2 (Cauchy-Schwarz).
+                _, plates, _ = frame["plates"]
+                top = max(plates.GetPoint(i)[1] for i in range(plates.GetNumberOfPoints()))
+                check(close(top, 2 * R + h - row["eps"] * 2 * R, 1e-12), f"{label}: top plate at {top}")
+                fy = point_tuples(particles, "force")
+                touching = [i for i in range(nodes) if top - particles.GetPoint(i)[1] < h / 2]
+                pushed = sum(fy[i][1] for i in touching)
+                check(abs(pushed * R ** 2 / B - row["F_R2_over_B"]) <= math.sqrt(len(touching)) * 1e-5,
+                      f"{label}: body force at the top plate {pushed * R ** 2 / B} B/R^2, F {row['F_R2_over_B']}")
+    print("compare.ring: SPD and DPM frames match ring.dat")
+
+
+def mesh_volumes(data):
+    """The volume each particle's closed triangle mesh encloses (divergence theorem), by particle_id."""
+    ids = cell_values(data, "particle_id")
+    volumes = {}
+    for c in range(data.GetNumberOfPolys()):
+        cell = data.GetCell(c)
+        a, b, d = (data.GetPoint(cell.GetPointId(q)) for q in range(3))
+        triple = (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
+                  + a[2] * (b[0] * d[1] - b[1] * d[0]))
+        volumes[int(ids[c])] = volumes.get(int(ids[c]), 0.0) + triple / 6
+    return volumes
+
+
+def check_shape3d(softgrain, work):
+    """dpm.shape3d: the mesh's one frame against faces.dat (face areas), the summary's counts (Euler), volume
+    and A^3D, and the unit sphere."""
+    out = work / "shape3d"
+    run(softgrain, out, "dpm.shape3d", "--vtk", "--set", "mesh=geodesic42")
+    result = out / "dpm.shape3d"
+    s = summary(result)
+    areas = [r["area"] for r in table(result / "faces.dat")]
+    series = read_series(result, "dpm.shape3d")
+    if not check(len(series) == 1 == s.get("vtk_frames"), f"shape3d: {len(series)} frames, expected 1"):
+        return
+    t, mesh, _ = series[0]["particles"]
+    check(t == 0, f"shape3d: time {t}")
+    check(mesh.GetNumberOfPoints() == s["vertices"] and mesh.GetNumberOfPolys() == s["faces"],
+          f"shape3d: {mesh.GetNumberOfPoints()} points, {mesh.GetNumberOfPolys()} faces")
+    edges = {tuple(sorted((mesh.GetCell(c).GetPointId(q), mesh.GetCell(c).GetPointId((q + 1) % 3))))
+             for c in range(mesh.GetNumberOfPolys()) for q in range(3)}
+    check(len(edges) == s["edges"] and mesh.GetNumberOfPoints() - len(edges) + mesh.GetNumberOfPolys() == 2,
+          f"shape3d: {len(edges)} edges, Euler characteristic not 2")
+    check(all(abs(math.dist(mesh.GetPoint(i), (0, 0, 0)) - 1) <= 1e-12 for i in range(mesh.GetNumberOfPoints())),
+          "shape3d: vertices not on the unit sphere")
+    written = cell_values(mesh, "face_area")
+    for c in range(mesh.GetNumberOfPolys()):
+        cell = mesh.GetCell(c)
+        a, b, d = (mesh.GetPoint(cell.GetPointId(q)) for q in range(3))
+        u, v = [b[i] - a[i] for i in range(3)], [d[i] - a[i] for i in range(3)]
+        area = 0.5 * math.sqrt((u[1] * v[2] - u[2] * v[1]) ** 2 + (u[2] * v[0] - u[0] * v[2]) ** 2
+                               + (u[0] * v[1] - u[1] * v[0]) ** 2)
+        # faces.dat has 12 significant digits: 1e-10 relative.
+        check(close(area, areas[c], 1e-10) and close(written[c], areas[c], 1e-10),
+              f"shape3d face {c}: area {area} (face_area {written[c]}) against faces.dat {areas[c]}")
+    volume = mesh_volumes(mesh)[0]
+    check(close(volume, s["volume"], 1e-12) and close(field(mesh, "volume"), s["volume"], 1e-15),
+          f"shape3d: enclosed volume {volume} against {s['volume']}")
+    area_sum = sum(areas)
+    A = area_sum ** 1.5 / (6 * math.sqrt(math.pi) * volume)  # A^3D = s^(3/2)/(6 sqrt(pi) v), sec. 9.3.1
+    check(close(A, s["shape_parameter_min"], 1e-10) and close(field(mesh, "shape_parameter"), A, 1e-10),
+          f"shape3d: A^3D {A} from the frame against {s['shape_parameter_min']}")
+    print("dpm.shape3d: the mesh frame matches faces.dat and the summary")
+
+
+def check_slide3d(softgrain, work):
+    """dpm.slide3d (every 3rd of 21 positions here): the slider along the path of path.dat at its height, the
+    slab fixed, and the smooth force on the slider from the frame's vertex forces against mu_smooth."""
+    out = work / "slide3d"
+    every, gap, sigma = 3, 0.5, 1.0  # every 3rd: positions off the symmetry points where F_x = 0
+    run(softgrain, out, "dpm.slide3d", "--vtk", "--vtk-every", str(every), "--set", "steps=20", f"gap={gap}")
+    result = out / "dpm.slide3d"
+    s = summary(result)
+    rows = table(result / "path.dat")
+    series = read_series(result, "dpm.slide3d")
+    check(len(series) == (len(rows) + every - 1) // every == s.get("vtk_frames"),
+          f"slide3d: {len(series)} frames for {len(rows)} positions every {every}")
+    slab, slider = s["slab_vertices"], s["slider_vertices"]
+    slab_points = None
+    for k, frame in enumerate(series):
+        row = rows[every * k]
+        t, data, _ = frame["particles"]
+        label = f"slide3d frame {k}"
+        check(close(t, row["x"], 1e-10) and close(field(data, "x"), row["x"], 1e-10), f"{label}: time {t}")
+        check(data.GetNumberOfPoints() == slab + slider, f"{label}: {data.GetNumberOfPoints()} points")
+        # path.dat has 12 significant digits: 1e-10 relative, and 1e-13 absolute for F_x/F_z (F_x is round-off,
+        # 1e-17, at the symmetry points).
+        for name in ("U_rough", "U_smooth", "mu_rough", "mu_smooth"):
+            check(abs(field(data, name) - row[name]) <= 1e-10 * abs(row[name]) + 1e-13,
+                  f"{label}: {name} {field(data, name)} against {row[name]}")
+        points = [data.GetPoint(i) for i in range(slab + slider)]
+        slab_points = slab_points or points[:slab]
+        check(points[:slab] == slab_points, f"{label}: the slab moved")
+        # The slider (vertex 0 down, a centrally symmetric mesh): centre at x, lowest vertex gap above the
+        # slab's top face z = sigma.
+        centre = [sum(p[c] for p in points[slab:]) / slider for c in range(3)]
+        check(close(centre[0], row["x"], 1e-10), f"{label}: slider centre {centre} against x {row['x']}")
+        check(close(min(p[2] for p in points[slab:]), sigma + gap, 1e-12), f"{label}: slider height")
+        f = point_tuples(data, "force")
+        fx, fz = sum(f[i][0] for i in range(slab, slab + slider)), sum(f[i][2] for i in range(slab, slab + slider))
+        check(fz > 0 and abs(fx / fz - row["mu_smooth"]) <= 1e-10 * abs(row["mu_smooth"]) + 1e-13,
+              f"{label}: F_x/F_z on the slider {fx / fz} against mu_smooth {row['mu_smooth']}")
+    print(f"dpm.slide3d: {len(series)} frames match path.dat")
+
+
+def check_shear_modulus3d(softgrain, work):
+    """dpm.shear_modulus3d, two packings: frames of the first packing only, one per pressure state, with
+    pressure, phi and G of modulus_shell.dat's packing 0 and phi recomputed from the meshes and the box."""
+    out = work / "shear-modulus3d"
+    run(softgrain, out, "dpm.shear_modulus3d", "--vtk", "--set", "model=shell", "mesh=icosahedron",
+        "particles=2", "packings=2", "pressures=2")
+    result = out / "dpm.shear_modulus3d"
+    rows = [r for r in table(result / "modulus_shell.dat") if r["packing"] == 0]
+    series = read_series(result, "dpm.shear_modulus3d")
+    check(len(series) == len(rows) == 3 == summary(result).get("vtk_frames"),
+          f"shear_modulus3d: {len(series)} frames for {len(rows)} states of packing 0")
+    for k, (frame, row) in enumerate(zip(series, rows)):
+        t, data, _ = frame["particles"]
+        _, box, _ = frame["box"]
+        label = f"shear_modulus3d frame {k}"
+        check(t == k, f"{label}: time {t}")
+        # modulus_shell.dat has 12 significant digits: 1e-10 relative (P_t = 1e-5).
+        for name, column in (("pressure", "P"), ("phi", "phi"), ("G", "G")):
+            check(relatively_close(field(data, name), row[column], 1e-10),
+                  f"{label}: {name} {field(data, name)} against {row[column]}")
+        check(data.GetNumberOfPoints() == 2 * 12 and data.GetNumberOfPolys() == 2 * 20 and box.GetNumberOfLines() == 12,
+              f"{label}: counts")
+        L = max(box.GetPoint(i)[0] for i in range(box.GetNumberOfPoints()))
+        phi = sum(mesh_volumes(data).values()) / L ** 3
+        check(close(phi, row["phi"], 1e-10), f"{label}: phi from the meshes {phi} against {row['phi']}")
+        for p in range(2):
+            centre = [sum(data.GetPoint(12 * p + v)[c] for v in range(12)) / 12 for c in range(3)]
+            check(all(0 <= c < L for c in centre), f"{label}: particle {p} centre {centre} outside [0, {L})")
+    print("dpm.shear_modulus3d: the first packing's frames match modulus_shell.dat")
+
+
 def check_dpm3d(softgrain, work):
     """dpm.compress3d (tetrahedra, shell, spring network) and dpm.modes3d's jammed packing."""
     for model, extra, points, polys in (("tetrahedra", ["mesh=geodesic42"], 42, 80),
@@ -1180,6 +1575,15 @@ def main():
     check_jam(softgrain, work)
     check_vsm(softgrain, work)
     check_sd(softgrain, work)
+    check_beam(softgrain, work)
+    check_ring_pressure(softgrain, work)
+    check_approach(softgrain, work)
+    check_patch(softgrain, work)
+    check_compare_ring(softgrain, work)
+    check_refusal_reasons(softgrain, work)
+    check_shape3d(softgrain, work)
+    check_slide3d(softgrain, work)
+    check_shear_modulus3d(softgrain, work)
     check_dpm3d(softgrain, work)
     if failures:
         print(f"vtk_readback: {len(failures)} failures", file=sys.stderr)
