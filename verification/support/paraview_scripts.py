@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Runs the ParaView scripts a user is told to run (scripts/paraview/spd.py, dpm.py, vsm.py, README "ParaView
-time series") the way the README says, with pvbatch and --screenshot, on small runs of `softgrain run --vtk`,
-and checks what they drew:
+"""Runs the ParaView scripts a user is told to run (scripts/paraview/spd.py, dpm.py, vsm.py, sd.py, README
+"ParaView time series") the way the README says, with pvbatch and --screenshot, on small runs of
+`softgrain run --vtk`, and checks what they drew:
 
   - each script exits 0 and prints the array, frame index, time value and colour range it used;
   - the frame is the one asked for (--time N, last): its time value equals the collection's N-th time value;
@@ -15,8 +15,8 @@ and checks what they drew:
 
 The scenes are spd.ring_compression (coloured by the elastic energy at frame 2, which differs from the
 last frame's), dpm.jam of shells (area ratio, last frame) and of smooth disks (one-vertex particles, drawn
-only as the vertex disks of dpm.py: by particle id), dpm.compress3d (volume ratio, 3D) and vsm.punch (von
-Mises stress at frame 1). pvbatch renders into an X server of its own: Xvfb with -displayfd, which picks a free
+only as the vertex disks of dpm.py: by particle id), dpm.compress3d (volume ratio, 3D), vsm.punch (von
+Mises stress at frame 1) and sd.many (4 particles on a line: the pair force at frame 3). pvbatch renders into an X server of its own: Xvfb with -displayfd, which picks a free
 display number itself (xvfb-run -a races with other X servers started at the same moment), and -noreset
 (see start_display).
 
@@ -193,6 +193,7 @@ def main():
         "dpm3d": make_run(softgrain, work, "dpm3d", "dpm.compress3d"),
         "vsm": make_run(softgrain, work, "vsm", "vsm.punch", "--set", "per_side=5", "--set", "layers=2",
                         "--vtk-every", "50"),
+        "sd": make_run(softgrain, work, "sd", "sd.many", "--set", "particles=4", "--set", "outputs=8"),
     }
     server, display = start_display()
     try:
@@ -202,6 +203,7 @@ def main():
             ("disks", "dpm.py", "CELLS", "particle_id", "last", ["--array", "particle_id"]),
             ("dpm3d", "dpm.py", "CELLS", "volume_ratio", "last", []),
             ("vsm", "vsm.py", "POINTS", "von_mises", "1", ["--array", "von_mises"]),
+            ("sd", "sd.py", "POINTS", "force", "3", ["--array", "force"]),
         )
         for label, script, association, array, time, options in drawings:
             if runs[label] is not None:
