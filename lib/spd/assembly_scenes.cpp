@@ -112,24 +112,12 @@ void run_bench(const BenchOptions& options, RunContext& context)
     s["neighbour_skin"] = a.model.neighbour_skin();
 }
 
-// The scene's defaults where they differ from the library's.
-CompactionSetup compaction_defaults()
-{
-    CompactionSetup setup;
-    setup.assembly.particles = 40;
-    setup.assembly.radius_spread = 0.15;
-    setup.assembly.ring.nodes = 16;
-    setup.assembly.ring.material.h = 0.1;
-    setup.assembly.ring.dt_factor = 0.2;
-    return setup;
-}
-
 OptionBinding<CompactionSetup> compaction_binding()
 {
     const auto ring = [](auto... field) {
         return path(&CompactionSetup::assembly, &AssemblySetup::ring, field...);
     };
-    OptionBinding<CompactionSetup> b(compaction_defaults());
+    OptionBinding<CompactionSetup> b(compaction_scene_defaults());
     b.integer(path(&CompactionSetup::assembly, &AssemblySetup::particles), "particles", "1",
               "number of rings (the paper: 500)")
         .at_least(2);

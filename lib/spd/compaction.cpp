@@ -367,4 +367,15 @@ void transfer(Archive& archive, CompactionResult& result)
     archive(result.steps);
 }
 
+CompactionSetup compaction_scene_defaults()
+{
+    CompactionSetup setup;
+    setup.assembly.particles = 40;
+    setup.assembly.radius_spread = 0.15;
+    setup.assembly.ring.nodes = 16;
+    setup.assembly.ring.material.h = 0.1;
+    setup.assembly.ring.dt_factor = 0.2;
+    return setup;
+}
+
 } // namespace softgrain::spd

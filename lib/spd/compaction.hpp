@@ -42,6 +42,11 @@ struct CompactionSetup
     int records = 100; // recorded states per half cycle
 };
 
+// The setup of the scene spd.compaction with its defaults (40 rings of 16 vertices, h = 0.1 R, a radius
+// spread of 0.15, dt = 0.2 dt_c: decisions spd-compaction-time-step, spd-vertex-pair-stability), where
+// they differ from the struct's.
+CompactionSetup compaction_scene_defaults();
+
 // Step (1): centres of frictionless disks (outer radii, unit weight each) at rest under gravity in a box of
 // the given width (walls x = 0, x = width, y = 0), released from a jittered lattice drawn from `seed`.
 struct DiskPacking

@@ -30,12 +30,8 @@ namespace {
 // The smoke scale of the compaction figures: 12 rings, about 3 s.
 CompactionSetup small_setup()
 {
-    CompactionSetup setup;
+    CompactionSetup setup = compaction_scene_defaults();
     setup.assembly.particles = 12;
-    setup.assembly.radius_spread = 0.15;
-    setup.assembly.ring.nodes = 16;
-    setup.assembly.ring.material.h = 0.1;
-    setup.assembly.ring.dt_factor = 0.2; // decisions spd-compaction-time-step, spd-vertex-pair-stability
     setup.strain_max = 0.15;
     setup.wall_speed = 3e-3;
     return setup;

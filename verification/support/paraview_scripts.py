@@ -37,6 +37,8 @@ import tempfile
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+from checks import check, failures
+
 SKIP = 77
 try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -46,14 +48,6 @@ except ImportError:
     vtkXMLPolyDataReader = None
 
 SCRIPTS = Path(__file__).resolve().parents[2] / "scripts" / "paraview"
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL: " + message, file=sys.stderr)
-    return condition
 
 
 def start_display():

@@ -66,6 +66,8 @@ import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+from checks import check, failures
+
 SKIP = 77
 try:
     from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
@@ -73,14 +75,6 @@ try:
 except ImportError:
     vtkXMLPolyDataReader = None
 
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL: " + message, file=sys.stderr)
-    return condition
 
 
 def close(a, b, tol=1e-12):
