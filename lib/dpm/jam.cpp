@@ -99,6 +99,9 @@ JamResult jam(const JamOptions& o)
     }
 
     const bool rough_disks = o.model == "rough_disk";
+    if (rough_disks && o.relaxation == Relaxation::fire_newton)
+        throw InputError("relaxation = 'fire_newton' with model = 'rough_disk': rigid polygons relax over "
+                         "rigid-body coordinates, with FIRE alone (allowed: fire)");
     FireOptions& fire = out.fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;

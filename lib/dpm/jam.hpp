@@ -34,8 +34,8 @@ struct JamOptions
     double kl_surface = 0.01;
     std::uint64_t seed = 1;
     bool decompress = false; // after pressure_max, expand back down through the same targets (Fig. 9.13b-d)
-    // FIRE alone, or FIRE handing over to the Newton finisher where it crawls (newton_relax.hpp); the
-    // rigid polygons of rough_disk relax over rigid-body coordinates with FIRE alone.
+    // FIRE alone, or FIRE handing over to the Newton finisher where it crawls (newton_relax.hpp). The
+    // rigid polygons of rough_disk relax over rigid-body coordinates with FIRE alone (fire_newton: InputError).
     Relaxation relaxation = Relaxation::fire;
 };
 

@@ -110,7 +110,7 @@ std::vector<ParameterSpec> jam_parameters()
         ParameterSpec::choice("relaxation", "fire", {"fire", "fire_newton"},
                               "minimiser after each box step: FIRE alone, or FIRE handing over to a "
                               "regularised Newton finisher on the sparse Hessian where it crawls "
-                              "(newton_relax.hpp; rough_disk: FIRE alone)"),
+                              "(newton_relax.hpp; rough_disk: fire only)"),
     };
 }
 

@@ -206,3 +206,11 @@ TEST_CASE("Newton finisher: non-finite coordinates or energies end in NumericalE
     y = jammed.x;
     CHECK_THROWS_AS(newton_finish(stiff, y, options), NumericalError);
 }
+
+TEST_CASE("relaxation = fire_newton with rigid rough disks is refused with InputError [issue 19]")
+{
+    JamOptions o;
+    o.model = "rough_disk";
+    o.relaxation = Relaxation::fire_newton;
+    CHECK_THROWS_AS(jam(o), InputError);
+}
