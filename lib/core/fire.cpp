@@ -35,6 +35,11 @@ FireResult fire_minimise(Eigen::VectorXd& x, const EnergyAndForce& energy_and_fo
             result.seconds = elapsed();
             return result;
         }
+        if (options.hand_over && options.hand_over(result.iterations, result.force_rms)) {
+            result.handed_over = true;
+            result.seconds = elapsed();
+            return result;
+        }
         const double power = f.dot(v);
         if (power > 0) {
             const double force_norm = std::sqrt(force_squared);

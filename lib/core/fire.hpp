@@ -6,7 +6,8 @@
 // zeroed, dt shrinks by f_dec and alpha is reset. Parameter defaults are the paper's.
 //
 // Stopping rule: the root-mean-square force per degree of freedom is below `force_tolerance` AND the
-// kinetic energy per degree of freedom is below `kinetic_tolerance`.
+// kinetic energy per degree of freedom is below `kinetic_tolerance`. Optionally FIRE stops early, unconverged,
+// to hand over to another minimiser (`hand_over`, e.g. a Newton finisher where FIRE crawls).
 #pragma once
 
 #include <Eigen/Core>
@@ -28,11 +29,15 @@ struct FireOptions
     double f_dec = 0.5;
     double alpha_start = 0.1;
     double f_alpha = 0.99;
+    // Called once per iteration, after the stopping rule, with the iteration and the force rms; FIRE stops
+    // (handed_over, not converged) when it returns true. Empty: never.
+    std::function<bool(long iteration, double force_rms)> hand_over;
 };
 
 struct FireResult
 {
     bool converged = false;
+    bool handed_over = false; // stopped by options.hand_over
     long iterations = 0;
     long force_evaluations = 0; // calls of energy_and_force: the start and one per iteration
     double seconds = 0;         // wall time of the relaxation (a cost, never asserted)

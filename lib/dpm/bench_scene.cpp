@@ -5,11 +5,13 @@
 // pressure_max and pressures (in k_v v0), A0_floppy (as A0^3D) as they are; both particle sizes on one mesh
 // whose vertex count nodes_small = nodes_large names it (mesh_for_nodes); rough contacts as in 2D; the rest
 // (stiffnesses, FIRE budget, saddle escapes, size ratio 1.4) at the protocol's defaults; kl_surface has no
-// 3D counterpart. Reported (summary.json): jam_seconds (the whole protocol), relax_seconds (the FIRE
-// relaxations in it), fire_iterations, force_evaluations (energy and gradient evaluations of those
-// relaxations: one per FIRE iteration and one at the start of each), force_evaluations_per_second and
-// vertex_force_evaluations_per_second (over relax_seconds), spectrum_seconds, degrees_of_freedom; the run's
-// peak memory is peak_memory_mib. Costs are measured, never asserted (verification/dpm/bench.cpp checks
+// 3D counterpart. Reported (summary.json): jam_seconds (the whole protocol, wall time) and jam_cpu_seconds
+// (its process CPU time: the cost on a loaded machine), relax_seconds (the relaxations in it) and
+// fire_seconds (their FIRE part), fire_iterations, force_evaluations (energy and gradient evaluations of the
+// FIRE runs: one per FIRE iteration and one at the start of each), force_evaluations_per_second and
+// vertex_force_evaluations_per_second (over fire_seconds: FIRE's rate), newton_handovers, newton_steps and
+// newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp; 0 with FIRE
+// alone and in 3D), spectrum_seconds, degrees_of_freedom; the run's peak memory is peak_memory_mib. Costs are measured, never asserted (verification/dpm/bench.cpp checks
 // that the keys agree with each other).
 #include "dpm/bench_scene.hpp"
 
@@ -23,6 +25,7 @@
 #include <Eigen/Eigenvalues>
 #include <array>
 #include <chrono>
+#include <ctime>
 
 namespace softgrain::dpm {
 
@@ -31,8 +34,9 @@ namespace {
 // What a jamming run cost, in either dimension.
 struct JamCost
 {
-    double jam_seconds = 0, relax_seconds = 0, spectrum_seconds = 0;
-    long fire_iterations = 0, force_evaluations = 0;
+    double jam_seconds = 0, jam_cpu_seconds = 0, relax_seconds = 0, fire_seconds = 0, spectrum_seconds = 0;
+    long fire_iterations = 0, force_evaluations = 0, newton_handovers = 0, newton_steps = 0,
+         newton_factorizations = 0;
     Eigen::Index degrees_of_freedom = 0, vertices = 0, modes = 0;
 };
 
@@ -94,9 +98,18 @@ JamCost measure(const Jam& jam_packing)
 {
     JamCost cost;
     auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
     const auto result = jam_packing();
+    cost.jam_cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     cost.jam_seconds = seconds_since(start);
     cost.relax_seconds = result.relax_seconds;
+    cost.fire_seconds = result.relax_seconds; // 3D: FIRE alone
+    if constexpr (requires { result.newton_steps; }) {
+        cost.fire_seconds = result.fire_seconds;
+        cost.newton_handovers = result.handovers;
+        cost.newton_steps = result.newton_steps;
+        cost.newton_factorizations = result.factorizations;
+    }
     cost.fire_iterations = result.fire_iterations;
     cost.force_evaluations = result.force_evaluations;
     cost.degrees_of_freedom = result.x.size();
@@ -128,12 +141,17 @@ void run_bench(const Parameters& p, RunContext& context)
     s["degrees_of_freedom"] = cost.degrees_of_freedom;
     s["vertices"] = cost.vertices;
     s["jam_seconds"] = cost.jam_seconds;
+    s["jam_cpu_seconds"] = cost.jam_cpu_seconds;
     s["relax_seconds"] = cost.relax_seconds;
+    s["fire_seconds"] = cost.fire_seconds;
     s["fire_iterations"] = cost.fire_iterations;
     s["force_evaluations"] = cost.force_evaluations;
-    s["force_evaluations_per_second"] = static_cast<double>(cost.force_evaluations) / cost.relax_seconds;
+    s["force_evaluations_per_second"] = static_cast<double>(cost.force_evaluations) / cost.fire_seconds;
     s["vertex_force_evaluations_per_second"] =
-        static_cast<double>(cost.vertices) * static_cast<double>(cost.force_evaluations) / cost.relax_seconds;
+        static_cast<double>(cost.vertices) * static_cast<double>(cost.force_evaluations) / cost.fire_seconds;
+    s["newton_handovers"] = cost.newton_handovers;
+    s["newton_steps"] = cost.newton_steps;
+    s["newton_factorizations"] = cost.newton_factorizations;
     s["spectrum_seconds"] = cost.spectrum_seconds;
     s["spectrum_modes"] = cost.modes;
 }

@@ -99,20 +99,41 @@ JamResult jam(const JamOptions& o)
     }
 
     const bool rough_disks = o.model == "rough_disk";
+    if (rough_disks && o.relaxation == Relaxation::fire_newton)
+        throw InputError("relaxation = 'fire_newton' with model = 'rough_disk': rigid polygons relax over "
+                         "rigid-body coordinates, with FIRE alone (allowed: fire)");
     FireOptions& fire = out.fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
-    const auto relax = [&](long step_index) {
-        const FireResult r = rough_disks ? relax_rigid_fire(s, out.x, fire) : relax_fire(s, out.x, fire);
+    const RelaxOptions relax_options{o.relaxation, fire};
+    const auto relax_rigid = [&](long step_index) {
+        const FireResult r = relax_rigid_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
         out.force_evaluations += r.force_evaluations;
         out.relax_seconds += r.seconds;
+        out.fire_seconds += r.seconds;
         if (!r.converged)
             throw NumericalError("relaxation during compression (" + fire_shortfall(r, fire) + ")",
                                  step_index,
                                  "force tolerance too small for the pressure; raise pressure_onset");
         return r.iterations;
+    };
+    const auto relax = [&](long step_index) {
+        if (rough_disks) return relax_rigid(step_index);
+        const RelaxResult r = dpm::relax(s, out.x, relax_options);
+        out.fire_iterations += r.fire_iterations;
+        out.force_evaluations += r.force_evaluations;
+        out.relax_seconds += r.seconds;
+        out.fire_seconds += r.fire_seconds;
+        out.newton_steps += r.newton_steps;
+        out.factorizations += r.factorizations;
+        out.handovers += r.handovers;
+        if (!r.converged)
+            throw NumericalError("relaxation during compression (" + relax_shortfall(r, relax_options) + ")",
+                                 step_index,
+                                 "force tolerance too small for the pressure; raise pressure_onset");
+        return r.fire_iterations;
     };
     const auto current_pressure = [&] {
         return pressure(rough_disks ? rigid_stress_tensor(s, out.x) : stress_tensor(s, out.x)) /

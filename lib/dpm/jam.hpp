@@ -10,6 +10,7 @@
 #pragma once
 
 #include "core/fire.hpp"
+#include "dpm/newton_relax.hpp"
 #include "dpm/system.hpp"
 
 #include <cstdint>
@@ -33,6 +34,9 @@ struct JamOptions
     double kl_surface = 0.01;
     std::uint64_t seed = 1;
     bool decompress = false; // after pressure_max, expand back down through the same targets (Fig. 9.13b-d)
+    // FIRE alone, or FIRE handing over to the Newton finisher where it crawls (newton_relax.hpp). The
+    // rigid polygons of rough_disk relax over rigid-body coordinates with FIRE alone (fire_newton: InputError).
+    Relaxation relaxation = Relaxation::fire;
 };
 
 struct JamState
@@ -51,8 +55,12 @@ struct JamResult
     Eigen::VectorXd x;
     double pressure_unit = 1; // k_c (disks) or k_a a0
     long fire_iterations = 0;
-    long force_evaluations = 0; // energy and gradient evaluations of all relaxations
-    double relax_seconds = 0;   // wall time of all relaxations (FIRE)
+    long force_evaluations = 0; // energy and gradient evaluations of all FIRE runs
+    double relax_seconds = 0;   // wall time of all relaxations (FIRE and the Newton finisher)
+    double fire_seconds = 0;    // of which FIRE
+    long newton_steps = 0;      // accepted steps of the Newton finisher (relaxation = fire_newton)
+    long factorizations = 0;    // its sparse LDL^T factorisations
+    long handovers = 0;         // relaxations FIRE handed over to it
     FireOptions fire;           // the protocol's FIRE settings, for further steps from its states
 };
 

@@ -24,6 +24,7 @@ JamOptions jam_options(const Parameters& p)
     o.seed = static_cast<std::uint64_t>(p.integer("seed"));
     o.A0_floppy = p.real("A0_floppy");
     o.kl_surface = p.real("kl_surface");
+    o.relaxation = relaxation_from_name(p.choice("relaxation"));
     return o;
 }
 
@@ -106,6 +107,10 @@ std::vector<ParameterSpec> jam_parameters()
             "kl_surface", 0.01, "k_c",
             "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
             .non_negative(),
+        ParameterSpec::choice("relaxation", "fire", {"fire", "fire_newton"},
+                              "minimiser after each box step: FIRE alone, or FIRE handing over to a "
+                              "regularised Newton finisher on the sparse Hessian where it crawls "
+                              "(newton_relax.hpp; rough_disk: fire only)"),
     };
 }
 

@@ -46,7 +46,7 @@ run_bench(const std::vector<std::pair<std::string, std::string>>& settings)
 void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
 {
     const double evaluations = s["force_evaluations"].get<double>(),
-                 seconds = s["relax_seconds"].get<double>();
+                 seconds = s["fire_seconds"].get<double>();
     CHECK(s["dimension"].get<int>() == dimension);
     CHECK(s["vertices"].get<long>() == vertices);
     CHECK(s["degrees_of_freedom"].get<long>() == dimension * vertices);
@@ -61,7 +61,9 @@ void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
                 static_cast<double>(vertices) * evaluations / seconds, (Tolerance{4 * round_off, 0}));
     // The relaxations are timed inside the protocol, the protocol and the spectrum inside the run.
     CHECK(seconds > 0);
-    CHECK(seconds <= s["jam_seconds"].get<double>());
+    CHECK(seconds <= s["relax_seconds"].get<double>());
+    CHECK(s["relax_seconds"].get<double>() <= s["jam_seconds"].get<double>());
+    CHECK(s["jam_cpu_seconds"].get<double>() > 0);
     CHECK(s["spectrum_seconds"].get<double>() > 0);
     CHECK(s["jam_seconds"].get<double>() + s["spectrum_seconds"].get<double>() <=
           s["wall_time_s"].get<double>());
@@ -83,6 +85,33 @@ TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm
     const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
     CHECK(summary["force_evaluations"].get<long>() == direct.force_evaluations);
+    // FIRE alone (the default relaxation): no Newton finisher.
+    CHECK(summary["newton_handovers"].get<long>() == 0);
+    CHECK(summary["newton_steps"].get<long>() == 0);
+    CHECK(summary["newton_factorizations"].get<long>() == 0);
+}
+
+TEST_CASE("dpm.bench in 2D with relaxation = fire_newton: the finisher's counts are those of dpm.jam's "
+          "protocol [issue 19]")
+{
+    const auto [summary, p] = run_bench({{"model", "shell"},
+                                         {"particles", "6"},
+                                         {"nodes_small", "6"},
+                                         {"nodes_large", "8"},
+                                         {"pressure_onset", "1e-5"},
+                                         {"pressures", "1"},
+                                         {"pressure_max", "2e-5"},
+                                         {"relaxation", "fire_newton"}});
+    check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
+    const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
+    CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
+    CHECK(summary["newton_handovers"].get<long>() == direct.handovers);
+    CHECK(summary["newton_steps"].get<long>() == direct.newton_steps);
+    CHECK(summary["newton_factorizations"].get<long>() == direct.factorizations);
+    // Every hand-over takes at least one factorisation, every accepted step one.
+    CHECK(direct.handovers > 0);
+    CHECK(direct.factorizations >= direct.newton_steps);
+    CHECK(direct.factorizations >= direct.handovers);
 }
 
 TEST_CASE("dpm.bench in 3D: consistent cost keys on the 3D protocol [issue 19]")
