@@ -128,6 +128,86 @@ ForceParts force_parts(const DpmSystem& s, const Eigen::VectorXd& x)
     return parts;
 }
 
+// A 3D packing of 8 icosahedral shells jammed at P_t = 1e-5 k_v v0, Newton-polished (as sparse_modes.cpp).
+Jam3dResult jammed_packing3d(std::uint64_t seed)
+{
+    Jam3dOptions o;
+    o.particles = 8;
+    o.mesh = "icosahedron";
+    o.pressure_onset = 1e-5;
+    o.seed = seed;
+    Jam3dResult j = jam3d(o);
+    polish_for_modes([&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                          Eigen::MatrixXd* h) { return total_energy3d(j.system, y, g, h); },
+                     j.x, j.pressure_unit);
+    return j;
+}
+
+// What the checks of a jammed packing need in either dimension.
+struct PackingUnderTest
+{
+    double unit = 1;   // the model's pressure unit
+    double volume = 0; // V
+    int dimension = 2;
+    Eigen::SparseMatrix<double> hessian;
+    StrainDerivatives strain;
+    ForceParts parts;
+};
+
+// (c) and (d) on one packing at its polished equilibrium x; `finite(dgamma)` is the finite-strain result.
+template <class Finite>
+void check_against_references(const LinearShearModulus& g, const PackingUnderTest& p,
+                              const Eigen::VectorXd& x, const Finite& finite_strain)
+{
+    const double unit = p.unit;
+    const Eigen::VectorXd lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(p.hessian), Eigen::EigenvaluesOnly)
+            .eigenvalues();
+    const double lowest_nonzero = lambda(g.negative_modes + g.zero_modes);
+    const double condition = g.largest_eigenvalue / lowest_nonzero;
+    MESSAGE("G " << g.modulus / unit << " = " << g.affine / unit << " - " << g.relaxation / unit
+                 << " [pressure unit]; zero modes " << g.zero_modes << ", negative " << g.negative_modes
+                 << ", lambda " << lowest_nonzero << " ... " << g.largest_eigenvalue << ", zero-mode load "
+                 << g.zero_mode_load << ", residual " << g.residual);
+    CHECK(g.negative_modes == 0);
+    CHECK(g.zero_modes >= p.dimension);
+    // The inertia count against the dense spectrum: the zero modes end below the cut, the rest above.
+    CHECK(std::abs(lambda(g.zero_modes - 1)) <= zero_mode_fraction * g.largest_eigenvalue);
+    CHECK(lowest_nonzero > zero_mode_fraction * g.largest_eigenvalue);
+    // (d) The dense reference: each eigenpair within n eps lambda_max (backward-stable solver), so a term
+    // xi^2/lambda within n eps kappa relatively, kappa = lambda_max / lambda_min; the sparse LDL^T of the
+    // pinned matrix (definite, backward stable) the same order. 4 n eps kappa.
+    const double n = static_cast<double>(x.size());
+    const double dense = dense_relaxation(p.hessian, p.strain.mixed, p.volume);
+    MESSAGE("relaxation: sparse " << g.relaxation << ", dense " << dense << ", relative difference "
+                                  << std::abs(g.relaxation - dense) / dense << ", 4 n eps kappa "
+                                  << 4 * n * round_off * condition);
+    CHECK_CLOSE(g.relaxation, dense, (Tolerance{4 * n * round_off * condition, 0}));
+    CHECK(g.residual < 4 * n * round_off * condition);
+    // (c) Finite strain: the least-squares slope over the stresses at 0, dgamma, 2 dgamma deviates from
+    // dSigma/dgamma at 0 by Sigma'' dgamma, measured by the second difference of the three stresses,
+    // |Sigma_2 - 2 Sigma_1 + Sigma_0| / dgamma (which also carries their noise). The noise: the stress sums
+    // moments x_v F_v^T of the shape and contact forces (eq. 9.26), each rounded to eps of
+    // S = sum_v |x_v| (|F_v^shape| + |F_v^contact|) / V; the Newton residual (forces <= 1e-13 of the
+    // pressure unit) is far below those forces. 4 n eps S / dgamma for the slope.
+    const auto points = x.reshaped(p.dimension, x.size() / p.dimension).colwise().norm().transpose();
+    const auto shape =
+        p.parts.shape.reshaped(p.dimension, x.size() / p.dimension).colwise().norm().transpose();
+    const auto contact =
+        p.parts.contact.reshaped(p.dimension, x.size() / p.dimension).colwise().norm().transpose();
+    const double moment_scale = (points.array() * (shape + contact).array()).sum() / p.volume;
+    for (double dgamma : {5e-9, 5e-10}) {
+        const ShearModulusResult finite = finite_strain(dgamma);
+        const std::vector<double>& stress = finite.shear_stress;
+        const double curvature = std::abs(stress[2] - 2 * stress[1] + stress[0]) / dgamma;
+        const double bound = curvature + 4 * n * round_off * moment_scale / dgamma;
+        MESSAGE("dgamma " << dgamma << ": finite-strain G " << finite.modulus / unit << ", linear "
+                          << g.modulus / unit << ", difference " << (finite.modulus - g.modulus) / unit
+                          << ", curvature " << curvature / unit << ", bound " << bound / unit);
+        CHECK(std::abs(finite.modulus - g.modulus) <= bound);
+    }
+}
+
 } // namespace
 
 TEST_CASE("linear-response G = sqrt(3)/4 k_c - 3/4 P for a compressed triangular disk crystal and "
@@ -223,61 +303,45 @@ TEST_CASE(
     CHECK_CLOSE(strain.first / s.box->prod(), -sigma(1, 0), (Tolerance{1e-8, 1e-12 * r.pressure_unit}));
 }
 
-TEST_CASE("linear-response G of jammed packings against the finite-strain G of Lees-Edwards steps and "
+TEST_CASE("linear-response G of jammed 2D packings against the finite-strain G of Lees-Edwards steps and "
           "against a dense pseudo-inverse [DPM sec. 9.4.3]")
 {
     for (const std::string model : {"surface_tension", "shell"}) {
         CAPTURE(model);
         const JamResult r = jammed_packing2d(model, 2);
         const DpmSystem& s = r.system;
-        const double unit = r.pressure_unit;
-        const LinearShearModulus g = linear_shear_modulus(s, r.x);
-        Eigen::SparseMatrix<double> h;
-        const StrainDerivatives strain = strain_derivatives(s, r.x, h);
-        const Eigen::VectorXd lambda =
-            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(h), Eigen::EigenvaluesOnly)
-                .eigenvalues();
-        const double lowest_nonzero = lambda(g.negative_modes + g.zero_modes);
-        const double condition = g.largest_eigenvalue / lowest_nonzero;
-        MESSAGE(model << ": G " << g.modulus / unit << " = " << g.affine / unit << " - "
-                      << g.relaxation / unit << " [k_a a0]; zero modes " << g.zero_modes << ", negative "
-                      << g.negative_modes << ", lambda " << lowest_nonzero << " ... " << g.largest_eigenvalue
-                      << ", zero-mode load " << g.zero_mode_load << ", residual " << g.residual);
-        CHECK(g.negative_modes == 0);
-        CHECK(g.zero_modes >= 2);
-        // The inertia count against the dense spectrum: the zero modes end below the cut, the rest above.
-        CHECK(std::abs(lambda(g.zero_modes - 1)) <= zero_mode_fraction * g.largest_eigenvalue);
-        CHECK(lowest_nonzero > zero_mode_fraction * g.largest_eigenvalue);
-        // (d) The dense reference: each eigenpair within n eps lambda_max (backward-stable solver), so a
-        // term xi^2/lambda within n eps kappa relatively, kappa = lambda_max / lambda_min; the sparse LDL^T
-        // of the pinned matrix (definite, backward stable) the same order. 4 n eps kappa.
-        const double n = static_cast<double>(r.x.size());
-        const double dense = dense_relaxation(h, strain.mixed, s.box->prod());
-        MESSAGE("relaxation: sparse " << g.relaxation << ", dense " << dense << ", 4 n eps kappa "
-                                      << 4 * n * round_off * condition);
-        CHECK_CLOSE(g.relaxation, dense, (Tolerance{4 * n * round_off * condition, 0}));
-        CHECK(g.residual < 4 * n * round_off * condition);
-        // (c) Finite strain: the least-squares slope over the stresses at 0, dgamma, 2 dgamma deviates from
-        // dSigma/dgamma at 0 by Sigma'' dgamma, measured by the second difference of the three stresses,
-        // |Sigma_2 - 2 Sigma_1 + Sigma_0| / dgamma (which also carries their noise). The noise: the stress
-        // sums moments x_v F_v^T of the shape and contact forces (eq. 9.26), each rounded to eps of
-        // S = sum_v |x_v| (|F_v^shape| + |F_v^contact|) / V; the Newton residual (forces <= 1e-13 k_a a0
-        // sigma) is far below those forces. 4 n eps S / dgamma for the slope.
-        const ForceParts parts = force_parts(s, r.x);
-        double moment_scale = 0;
-        for (Eigen::Index v = 0; v < r.x.size() / 2; ++v)
-            moment_scale += r.x.segment<2>(2 * v).norm() *
-                            (parts.shape.segment<2>(2 * v).norm() + parts.contact.segment<2>(2 * v).norm());
-        moment_scale /= s.box->prod();
-        for (double dgamma : {5e-9, 5e-10}) {
-            const ShearModulusResult finite = shear_modulus(s, r.x, dgamma, 2, 1e-13 * unit);
-            const std::vector<double>& stress = finite.shear_stress;
-            const double curvature = std::abs(stress[2] - 2 * stress[1] + stress[0]) / dgamma;
-            const double bound = curvature + 4 * n * round_off * moment_scale / dgamma;
-            MESSAGE("dgamma " << dgamma << ": finite-strain G " << finite.modulus / unit << ", linear "
-                              << g.modulus / unit << ", difference " << (finite.modulus - g.modulus) / unit
-                              << ", curvature " << curvature / unit << ", bound " << bound / unit);
-            CHECK(std::abs(finite.modulus - g.modulus) <= bound);
-        }
+        PackingUnderTest p;
+        p.unit = r.pressure_unit;
+        p.volume = s.box->prod();
+        p.dimension = 2;
+        p.strain = strain_derivatives(s, r.x, p.hessian);
+        p.parts = force_parts(s, r.x);
+        check_against_references(linear_shear_modulus(s, r.x), p, r.x, [&](double dgamma) {
+            return shear_modulus(s, r.x, dgamma, 2, 1e-13 * p.unit);
+        });
     }
+}
+
+TEST_CASE("linear-response G of a jammed 3D shell packing against the finite-strain G and a dense "
+          "pseudo-inverse [DPM sec. 9.4.3, Fig. 9.16b]")
+{
+    const Jam3dResult j = jammed_packing3d(1); // seed 3's packing has no contact across the y boundary: G = 0
+    const DpmSystem3d& s = j.system;
+    PackingUnderTest p;
+    p.unit = j.pressure_unit;
+    p.volume = std::pow(*s.box, 3);
+    p.dimension = 3;
+    p.strain.x = &j.x;
+    p.strain.mixed = Eigen::VectorXd::Zero(j.x.size());
+    p.hessian = sparse_dynamical_matrix3d(s, j.x, &p.strain);
+    p.parts = {Eigen::VectorXd::Zero(j.x.size()), Eigen::VectorXd::Zero(j.x.size())};
+    total_energy3d(s, j.x, &p.parts.shape, nullptr);
+    interaction_energy3d(s, j.x, &p.parts.contact, nullptr);
+    p.parts.shape -= p.parts.contact; // the shape part: total minus contacts
+    const LinearShearModulus g = linear_shear_modulus(s, j.x);
+    CHECK(p.strain.mixed.norm() > 0);
+    // sigma_xy = (1/V) dU/dgamma = -Sigma_xy of the virial (3D eq. 9.26) at the polished equilibrium.
+    CHECK_CLOSE(g.stress, -stress_tensor3d(s, j.x)(1, 0), (Tolerance{1e-8, 1e-12 * p.unit}));
+    check_against_references(g, p, j.x,
+                             [&](double dgamma) { return shear_modulus(s, j.x, dgamma, 2, 1e-13 * p.unit); });
 }
