@@ -73,7 +73,7 @@ LinearShearModulus linear_shear_modulus(const Eigen::SparseMatrix<double>& h, co
 {
     LinearShearModulus out;
     out.largest_eigenvalue = largest_eigenvalue(h);
-    const double tau = zero_mode_fraction * out.largest_eigenvalue;
+    const double tau = pseudo_inverse_cut * out.largest_eigenvalue;
     out.negative_modes = count_below(h, -tau);
     const int below = count_below(h, tau);
     out.zero_modes = below - out.negative_modes;

@@ -22,13 +22,14 @@
 //
 // The solve is sparse: the zero modes N (shift-and-invert Lanczos, sparse_modes.hpp; counted by the inertia
 // of H -+ tau) are removed from Xi (b = (1 - N N^T) Xi), and H z = b is solved with the coordinates of
-// dim N vertices pinned (column-pivoted QR of N^T picks those where N is best conditioned): the pinned
+// dim N coordinates pinned (column-pivoted QR of N^T picks those where N is best conditioned): the pinned
 // equations follow from the others because u^T H = 0 and u^T b = 0 for every zero mode u, so the sparse
 // LDL^T of the remaining principal submatrix (definite at a minimum) gives a z with H z = b, and
 // b^T z = b^T H^+ b whatever null component z has. The relative residual |H z - b| / |b| is returned.
 #pragma once
 
 #include "dpm/local_derivatives.hpp"
+#include "dpm/modes.hpp"
 #include "dpm/system.hpp"
 #include "dpm/system3d.hpp"
 
@@ -36,19 +37,16 @@
 
 namespace softgrain::dpm {
 
-// Eigenvalues of H within +- this fraction of its largest are zero modes, left out of H^+: the cut of
-// polish_newton's pseudo-inverse (modes.hpp), so that the linear and the finite-strain G leave out the
-// same modes.
-constexpr double zero_mode_fraction = 1e-10;
-
 struct LinearShearModulus
 {
-    double modulus = 0;     // G [stress unit: E/L^2 in 2D, E/L^3 in 3D]
-    double affine = 0;      // (1/V) d^2U/dgamma^2 at fixed x (image-shift convention)
-    double relaxation = 0;  // (1/V) Xi^T H^+ Xi (>= 0 at a minimum)
-    double stress = 0;      // sigma_xy = (1/V) dU/dgamma = -Sigma_xy of eq. (9.26)
-    int zero_modes = 0;     // eigenvalues of H within +- zero_mode_fraction lambda_max
-    int negative_modes = 0; // eigenvalues below -zero_mode_fraction lambda_max: a saddle, not a minimum
+    double modulus = 0;    // G [stress unit: E/L^2 in 2D, E/L^3 in 3D]
+    double affine = 0;     // (1/V) d^2U/dgamma^2 at fixed x (image-shift convention)
+    double relaxation = 0; // (1/V) Xi^T H^+ Xi (>= 0 at a minimum)
+    double stress = 0;     // sigma_xy = (1/V) dU/dgamma = -Sigma_xy of eq. (9.26)
+    // Eigenvalues within +- pseudo_inverse_cut lambda_max (modes.hpp) are zero modes, left out of H^+ as
+    // polish_newton leaves them out, so that the linear and the finite-strain G leave out the same modes.
+    int zero_modes = 0;     // eigenvalues of H within +- pseudo_inverse_cut lambda_max
+    int negative_modes = 0; // eigenvalues below -pseudo_inverse_cut lambda_max: a saddle, not a minimum
     double largest_eigenvalue = 0; // lambda_max of H
     double zero_mode_load = 0;     // |N^T Xi| / |Xi|: Xi's part along the zero modes
     double residual = 0;           // |H z - b| / |b| of the solve

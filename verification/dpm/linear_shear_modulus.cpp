@@ -88,12 +88,12 @@ StrainDerivatives strain_derivatives(const DpmSystem& s, const Eigen::VectorXd& 
 }
 
 // Reference: Xi^T H^+ Xi / V from the dense eigendecomposition of H, leaving out the eigenvalues within
-// +- zero_mode_fraction lambda_max (as the sparse solve).
+// +- pseudo_inverse_cut lambda_max (as the sparse solve).
 double dense_relaxation(const Eigen::SparseMatrix<double>& h, const Eigen::VectorXd& xi, double volume)
 {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(h)};
     const Eigen::VectorXd& lambda = solver.eigenvalues();
-    const double cut = zero_mode_fraction * lambda.cwiseAbs().maxCoeff();
+    const double cut = pseudo_inverse_cut * lambda.cwiseAbs().maxCoeff();
     const Eigen::VectorXd projected = solver.eigenvectors().transpose() * xi;
     double relaxation = 0;
     for (Eigen::Index k = 0; k < lambda.size(); ++k)
@@ -172,8 +172,8 @@ void check_against_references(const LinearShearModulus& g, const PackingUnderTes
     CHECK(g.negative_modes == 0);
     CHECK(g.zero_modes >= p.dimension);
     // The inertia count against the dense spectrum: the zero modes end below the cut, the rest above.
-    CHECK(std::abs(lambda(g.zero_modes - 1)) <= zero_mode_fraction * g.largest_eigenvalue);
-    CHECK(lowest_nonzero > zero_mode_fraction * g.largest_eigenvalue);
+    CHECK(std::abs(lambda(g.zero_modes - 1)) <= pseudo_inverse_cut * g.largest_eigenvalue);
+    CHECK(lowest_nonzero > pseudo_inverse_cut * g.largest_eigenvalue);
     // (d) The dense reference: each eigenpair within n eps lambda_max (backward-stable solver), so a term
     // xi^2/lambda within n eps kappa relatively, kappa = lambda_max / lambda_min; the sparse LDL^T of the
     // pinned matrix (definite, backward stable) the same order. 4 n eps kappa.
