@@ -28,6 +28,22 @@
 
 namespace softgrain::dpm {
 
+// Derivatives of U(x, gamma) with respect to the Lees-Edwards strain gamma at fixed coordinates x, in the
+// image-shift convention: x holds the unwrapped vertices and gamma enters only through the translations of
+// the periodic images, -n_y (gamma L_y, L_y, 0) - ... for an image n_y boxes away in y (contact_list.hpp,
+// interactions3d.cpp). A term whose point k is imaged by s_k therefore sees d(x_k + s_k)/dgamma =
+// s_{k,y} e_x (and d^2/dgamma^2 = 0), so from its local gradient g and Hessian h, with v_k = s_{k,y} e_x:
+//   dU/dgamma += g . v,   d^2U/dgamma^2 += v^T h v,   Xi_k = d^2U/(dx_k dgamma) += (h v)_k.
+// Shape terms (one unwrapped particle, s = 0) do not depend on gamma in this convention.
+// `x` points at the coordinates the terms are evaluated at: s_k is recovered as local x_k - x_k.
+struct StrainDerivatives
+{
+    const Eigen::VectorXd* x = nullptr;
+    Eigen::VectorXd mixed; // Xi = d^2U/dx dgamma [E/L], the size of x, zero to start
+    double first = 0;      // dU/dgamma [E]
+    double second = 0;     // d^2U/dgamma^2 [E]
+};
+
 // Where second derivatives are summed: a dense matrix (the full spectrum of a small system) or a list of
 // (row, column, value) triplets that Eigen::SparseMatrix::setFromTriplets sums into the sparse Hessian (the
 // lowest modes of a large one, sparse_modes.hpp); a dense n x n Hessian of n = 16 128 degrees of freedom
@@ -39,7 +55,13 @@ class HessianSink
     HessianSink(std::nullptr_t = nullptr) {}
     HessianSink(Eigen::MatrixXd* dense) : dense_(dense) {}
     HessianSink(std::vector<Eigen::Triplet<double>>* triplets) : triplets_(triplets) {}
-    explicit operator bool() const { return dense_ != nullptr || triplets_ != nullptr; }
+    // Triplets (may be null) and the strain derivatives of the same terms.
+    HessianSink(std::vector<Eigen::Triplet<double>>* triplets, StrainDerivatives* strain)
+        : triplets_(triplets), strain_(strain)
+    {
+    }
+    explicit operator bool() const { return dense_ != nullptr || triplets_ != nullptr || strain_ != nullptr; }
+    StrainDerivatives* strain() const { return strain_; }
 
     // Adds `block` to the rows from `row` and the columns from `column`.
     template <class Block>
@@ -49,6 +71,7 @@ class HessianSink
             dense_->block(row, column, block.rows(), block.cols()) += block;
             return;
         }
+        if (!triplets_) return; // strain derivatives only
         // Evaluated once: a product expression (the rank-one shape blocks) would be re-evaluated per entry.
         const typename Block::PlainObject values = block;
         for (Eigen::Index j = 0; j < values.cols(); ++j)
@@ -60,6 +83,7 @@ class HessianSink
   private:
     Eigen::MatrixXd* dense_ = nullptr;
     std::vector<Eigen::Triplet<double>>* triplets_ = nullptr;
+    StrainDerivatives* strain_ = nullptr;
 };
 
 template <int N>
@@ -155,6 +179,23 @@ void scatter(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& point
     }
 }
 
+// Adds the strain derivatives of one local term (StrainDerivatives above) evaluated at local_x.
+template <int Dim, int K>
+void add_strain_derivatives(const LocalDerivatives<K * Dim>& d, const std::array<int, K>& points,
+                            const Eigen::Matrix<double, K * Dim, 1>& local_x, StrainDerivatives& strain)
+{
+    Eigen::Matrix<double, K * Dim, 1> velocity =
+        Eigen::Matrix<double, K * Dim, 1>::Zero(); // d local_x / dgamma
+    for (int k = 0; k < K; ++k)
+        velocity(Dim * k) = local_x(Dim * k + 1) - (*strain.x)(Dim * points[k] + 1); // s_{k,y}
+    if (velocity.isZero(0)) return; // no image: independent of gamma
+    const Eigen::Matrix<double, K * Dim, 1> coupling = d.hessian * velocity;
+    strain.first += d.gradient.dot(velocity);
+    strain.second += velocity.dot(coupling);
+    for (int k = 0; k < K; ++k)
+        strain.mixed.template segment<Dim>(Dim * points[k]) += coupling.template segment<Dim>(Dim * k);
+}
+
 // Energy of one local term over `points` at local coordinates `local_x` (which may hold periodic images),
 // adding its gradient and Hessian (when asked for) into the global arrays. Returns the energy.
 // `virial`, when given, accumulates sum_k y_k F_k^T (W_ab = sum_k y_{k,a} F_{k,b}, F = -grad) over the
@@ -171,11 +212,13 @@ double add_local_term(const Term& term, const std::array<int, K>& points,
         for (int k = 0; k < K; ++k)
             *virial -= local_x.template segment<Dim>(Dim * k) *
                        d.gradient.template segment<Dim>(Dim * k).transpose();
+        if (hessian.strain()) add_strain_derivatives<Dim, K>(d, points, local_x, *hessian.strain());
         scatter<Dim, K>(d, points, 1.0, gradient, hessian);
         return d.value;
     }
     if (hessian) {
         const auto d = local_hessian<K * Dim>(term, local_x);
+        if (hessian.strain()) add_strain_derivatives<Dim, K>(d, points, local_x, *hessian.strain());
         scatter<Dim, K>(d, points, 1.0, gradient, hessian);
         return d.value;
     }

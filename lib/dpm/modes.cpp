@@ -113,7 +113,7 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         if (force < force_tolerance) break;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
         const Eigen::VectorXd& lambda = solver.eigenvalues();
-        const double cut = 1e-10 * lambda.cwiseAbs().maxCoeff();
+        const double cut = pseudo_inverse_cut * lambda.cwiseAbs().maxCoeff();
         const Eigen::VectorXd projected = solver.eigenvectors().transpose() * g;
         Eigen::VectorXd step_in_modes = Eigen::VectorXd::Zero(x.size());
         for (Eigen::Index k = 0; k < lambda.size(); ++k)

@@ -124,7 +124,12 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
 using EnergyWithDerivatives =
     std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*, Eigen::MatrixXd*)>;
 
-// Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above 1e-10 times the largest) until the
+// The pseudo-inverse of M in Newton's step (and in the linear-response shear modulus,
+// linear_shear_modulus.hpp) leaves out the eigenvalues below this fraction of the largest |lambda|.
+constexpr double pseudo_inverse_cut = 1e-10;
+
+// Newton steps x -= M^+ grad U (pseudo-inverse over the eigenvalues above pseudo_inverse_cut times the
+// largest) until the
 // largest force component is below force_tolerance or `max_steps` is reached; returns that force.
 // Converges quadratically from a FIRE-relaxed state, also on manifolds of minima (floppy particles). A step
 // to a largest force above that of the start is halved until it is below (damped Newton; the polish ends

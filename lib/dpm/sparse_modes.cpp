@@ -70,8 +70,24 @@ double gershgorin_bound(const Eigen::SparseMatrix<double>& m)
     return row_sums.maxCoeff();
 }
 
-// Number of eigenvalues of m below tau: the negative pivots of the LDL^T of m - tau (Sylvester's law of
-// inertia); -1 where the factor breaks down (a zero pivot).
+} // namespace
+
+Eigen::SparseMatrix<double> sparse_dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x,
+                                                    StrainDerivatives* strain)
+{
+    std::vector<Eigen::Triplet<double>> triplets;
+    total_energy(system, x, nullptr, HessianSink(&triplets, strain));
+    return from_triplets(triplets, x.size());
+}
+
+Eigen::SparseMatrix<double> sparse_dynamical_matrix3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
+                                                      StrainDerivatives* strain)
+{
+    std::vector<Eigen::Triplet<double>> triplets;
+    total_energy3d(system, x, nullptr, HessianSink(&triplets, strain));
+    return from_triplets(triplets, x.size());
+}
+
 int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
 {
     Eigen::SparseMatrix<double> identity(m.rows(), m.cols());
@@ -81,7 +97,6 @@ int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
     return static_cast<int>((ldlt.vectorD().array() < 0).count());
 }
 
-// lambda_max of m by plain Lanczos on m (a few products: it lies at the end of the spectrum).
 double largest_eigenvalue(const Eigen::SparseMatrix<double>& m)
 {
     Spectra::SparseSymMatProd<double> product(m);
@@ -94,22 +109,6 @@ double largest_eigenvalue(const Eigen::SparseMatrix<double>& m)
                                  std::to_string(m.rows()) + " rows)",
                              solver.num_iterations(), "no convergence in 1000 restarts: a non-finite entry");
     return solver.eigenvalues()(0);
-}
-
-} // namespace
-
-Eigen::SparseMatrix<double> sparse_dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x)
-{
-    std::vector<Eigen::Triplet<double>> triplets;
-    total_energy(system, x, nullptr, &triplets);
-    return from_triplets(triplets, x.size());
-}
-
-Eigen::SparseMatrix<double> sparse_dynamical_matrix3d(const DpmSystem3d& system, const Eigen::VectorXd& x)
-{
-    std::vector<Eigen::Triplet<double>> triplets;
-    total_energy3d(system, x, nullptr, &triplets);
-    return from_triplets(triplets, x.size());
 }
 
 LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count)

@@ -13,9 +13,13 @@
 
 namespace softgrain::dpm {
 
-// Eq. (9.28) as a sparse matrix: the same local terms as dynamical_matrix, summed by setFromTriplets.
-Eigen::SparseMatrix<double> sparse_dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x);
-Eigen::SparseMatrix<double> sparse_dynamical_matrix3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
+// Eq. (9.28) as a sparse matrix: the same local terms as dynamical_matrix, summed by setFromTriplets. With
+// `strain` (its x pointing at x, its `mixed` zero and of the size of x), the derivatives with respect to
+// the Lees-Edwards strain are added from the same terms (local_derivatives.hpp).
+Eigen::SparseMatrix<double> sparse_dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x,
+                                                    StrainDerivatives* strain = nullptr);
+Eigen::SparseMatrix<double> sparse_dynamical_matrix3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
+                                                      StrainDerivatives* strain = nullptr);
 
 struct LowestModes
 {
@@ -27,6 +31,14 @@ struct LowestModes
     int restarts = 0;       // of the shift-and-invert Lanczos iteration
     int solves = 0;         // applications of (M - sigma)^{-1}
 };
+
+// Number of eigenvalues of the symmetric sparse m below tau: the negative pivots of the LDL^T of m - tau
+// (Sylvester's law of inertia); -1 where the factor breaks down (a zero pivot).
+int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau);
+
+// lambda_max of the symmetric sparse m by plain Lanczos (a few products: it lies at the end of the
+// spectrum); Spectra's relative tolerance 1e-12. NumericalError after 1000 restarts.
+double largest_eigenvalue(const Eigen::SparseMatrix<double>& m);
 
 // The `count` lowest eigenpairs of the symmetric sparse m (1 <= count < rows). The shift starts at
 // sigma = -1e-6 R, R = max_i sum_j |m_ij| (Gershgorin: every |lambda| <= R), below the zero modes and the
