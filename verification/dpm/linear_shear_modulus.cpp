@@ -12,6 +12,7 @@
 #include "dpm/shear_modulus.hpp"
 #include "dpm/sparse_modes.hpp"
 #include "dpm/stress.hpp"
+#include "support/packings.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -19,6 +20,8 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::fcc_crystal;
+using softgrain::verification::polished_packing2d;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -39,42 +42,6 @@ DpmSystem triangular_crystal(double a, Eigen::VectorXd& x)
             s.add_particle(c, 1.0, ShapeParameters{}, x);
         }
     return s;
-}
-
-// n^3 cubic cells of side sqrt(2) a, four spheres (sigma = 1, k_c = 1) per cell.
-DpmSystem3d fcc_crystal(double a, int n, Eigen::VectorXd& x)
-{
-    DpmSystem3d s;
-    s.kc = 1.0;
-    const double c = std::sqrt(2.0) * a;
-    s.box = n * c;
-    TriangleMesh point;
-    point.vertices = Eigen::Matrix3Xd::Zero(3, 1);
-    s.meshes.push_back(point);
-    const Eigen::Vector3d basis[4] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-            for (int k = 0; k < n; ++k)
-                for (const Eigen::Vector3d& b : basis)
-                    s.add_particle(0, c * (Eigen::Vector3d(i + 0.25, j + 0.25, k + 0.25) + b), 1.0,
-                                   ShapeParameters3d{}, x);
-    return s;
-}
-
-// A 16-particle jammed packing at P_t = 1e-5 k_a a0, Newton-polished to round-off (as sparse_modes.cpp).
-JamResult jammed_packing2d(const std::string& model, std::uint64_t seed)
-{
-    JamOptions o;
-    o.model = model;
-    o.particles = 16;
-    o.nodes_small = 6;
-    o.nodes_large = 10;
-    o.pressure_onset = o.pressure_max = 1e-5;
-    o.pressures = 0;
-    o.seed = seed;
-    JamResult r = jam(o);
-    polish_for_modes(r.system, r.x, r.pressure_unit);
-    return r;
 }
 
 StrainDerivatives strain_derivatives(const DpmSystem& s, const Eigen::VectorXd& x,
@@ -248,7 +215,7 @@ TEST_CASE(
     "Xi = d^2U/dx dgamma and d^2U/dgamma^2 against central differences in gamma at fixed x, on a jammed "
     "packing [DPM sec. 9.4.3]")
 {
-    const JamResult r = jammed_packing2d("surface_tension", 1);
+    const JamResult r = polished_packing2d("surface_tension", 16, 1);
     const DpmSystem& s = r.system;
     Eigen::SparseMatrix<double> h;
     const StrainDerivatives strain = strain_derivatives(s, r.x, h);
@@ -308,7 +275,7 @@ TEST_CASE("linear-response G of jammed 2D packings against the finite-strain G o
 {
     for (const std::string model : {"surface_tension", "shell"}) {
         CAPTURE(model);
-        const JamResult r = jammed_packing2d(model, 2);
+        const JamResult r = polished_packing2d(model, 16, 2);
         const DpmSystem& s = r.system;
         PackingUnderTest p;
         p.unit = r.pressure_unit;

@@ -8,6 +8,7 @@
 //   G = (sqrt(2)/a^3) (k a^2/2 - 3 f a/2) = k/(sqrt(2) a) - (3/4) P,   P = (1/3V) sum f r = 2 sqrt(2) f/a^2.
 #include "core/errors.hpp"
 #include "dpm/shear_modulus.hpp"
+#include "support/packings.hpp"
 #include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
 
@@ -16,31 +17,8 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::fcc_crystal;
 using softgrain::verification::Tolerance;
-
-namespace {
-
-// n^3 cubic cells of side sqrt(2) a, four one-vertex particles (sigma = 1, no shape energy) per cell.
-DpmSystem3d fcc_crystal(double a, int n, Eigen::VectorXd& x)
-{
-    DpmSystem3d s;
-    s.kc = 1.0;
-    const double c = std::sqrt(2.0) * a;
-    s.box = n * c;
-    TriangleMesh point;
-    point.vertices = Eigen::Matrix3Xd::Zero(3, 1);
-    s.meshes.push_back(point);
-    const Eigen::Vector3d basis[4] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-            for (int k = 0; k < n; ++k)
-                for (const Eigen::Vector3d& b : basis)
-                    s.add_particle(0, c * (Eigen::Vector3d(i + 0.25, j + 0.25, k + 0.25) + b), 1.0,
-                                   ShapeParameters3d{}, x);
-    return s;
-}
-
-} // namespace
 
 TEST_CASE("3D G from Lees-Edwards steps of 5e-9 = k_c/(sqrt(2) a) - 3/4 P for a compressed fcc sphere "
           "crystal [DPM sec. 9.4.3, eq. (9.4)]")

@@ -19,6 +19,7 @@
 #include "core/errors.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/jam3d.hpp"
+#include "support/packings.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -27,24 +28,10 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::polished_packing2d;
 using softgrain::verification::round_off;
 
 namespace {
-
-JamResult jammed_packing2d(int particles, std::uint64_t seed)
-{
-    JamOptions o;
-    o.model = "surface_tension";
-    o.particles = particles;
-    o.nodes_small = 6;
-    o.nodes_large = 10;
-    o.pressure_onset = o.pressure_max = 1e-5;
-    o.pressures = 0;
-    o.seed = seed;
-    JamResult r = jam(o);
-    polish_for_modes(r.system, r.x, r.pressure_unit);
-    return r;
-}
 
 Jam3dResult jammed_packing3d(int particles, std::uint64_t seed)
 {
@@ -145,7 +132,7 @@ TEST_CASE("sparse dynamical matrix equals the dense one: 2D and 3D, rough and sm
 {
     SUBCASE("2D surface-tension packing, N = 16")
     {
-        JamResult r = jammed_packing2d(16, 2);
+        JamResult r = polished_packing2d("surface_tension", 16, 2);
         check_same_matrix(dynamical_matrix(r.system, r.x), sparse_dynamical_matrix(r.system, r.x));
         // Smooth contacts (eqs. 9.5-9.9) at the same overlapping configuration.
         r.system.interaction = InteractionKind::smooth;
@@ -172,7 +159,7 @@ TEST_CASE("lowest modes by shift-and-invert Lanczos equal the dense spectrum's [
     {
         for (const int particles : {16, 32}) {
             CAPTURE(particles);
-            const JamResult r = jammed_packing2d(particles, 2);
+            const JamResult r = polished_packing2d("surface_tension", particles, 2);
             check_lowest_modes(dynamical_matrix(r.system, r.x), sparse_dynamical_matrix(r.system, r.x), 60,
                                r.pressure_unit, 1e-13);
         }

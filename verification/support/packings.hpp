@@ -1,0 +1,53 @@
+// Packings shared by the DPM tests: an fcc crystal of one-vertex particles (exact shear modulus) and a small
+// jammed 2D packing polished to round-off forces (the reference system of the mode and modulus tests).
+#pragma once
+
+#include "dpm/jam.hpp"
+#include "dpm/modes.hpp"
+#include "dpm/system3d.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace softgrain::verification {
+
+// n^3 cubic cells of side sqrt(2) a, four one-vertex particles (sigma = 1, k_c = 1, no shape energy) per
+// cell, in a periodic cube.
+inline dpm::DpmSystem3d fcc_crystal(double a, int n, Eigen::VectorXd& x)
+{
+    dpm::DpmSystem3d s;
+    s.kc = 1.0;
+    const double c = std::sqrt(2.0) * a;
+    s.box = n * c;
+    dpm::TriangleMesh point;
+    point.vertices = Eigen::Matrix3Xd::Zero(3, 1);
+    s.meshes.push_back(point);
+    const Eigen::Vector3d basis[4] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k)
+                for (const Eigen::Vector3d& b : basis)
+                    s.add_particle(0, c * (Eigen::Vector3d(i + 0.25, j + 0.25, k + 0.25) + b), 1.0,
+                                   dpm::ShapeParameters3d{}, x);
+    return s;
+}
+
+// `particles` deformable particles of 6 and 10 vertices of `model`, jammed by the dpm.jam protocol at
+// P_t = 1e-5 k_a a0 and Newton-polished to round-off forces (polish_for_modes).
+inline dpm::JamResult polished_packing2d(const std::string& model, int particles, std::uint64_t seed)
+{
+    dpm::JamOptions o;
+    o.model = model;
+    o.particles = particles;
+    o.nodes_small = 6;
+    o.nodes_large = 10;
+    o.pressure_onset = o.pressure_max = 1e-5;
+    o.pressures = 0;
+    o.seed = seed;
+    dpm::JamResult r = dpm::jam(o);
+    dpm::polish_for_modes(r.system, r.x, r.pressure_unit);
+    return r;
+}
+
+} // namespace softgrain::verification
