@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/fits.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "sd/approach.hpp"
 #include "sd/approach_analysis.hpp"
@@ -44,47 +45,93 @@ ApproachProblem pair_problem(double kappa, double h0, double h_min)
     return {m, paper_contact_laws(m), constant_loading(kappa), h0, h_min};
 }
 
-std::vector<ParameterSpec> integrator_parameters()
+// The integration parameters sd.approach and sd.phase_diagram share.
+struct IntegratorChoice
 {
-    return {
-        ParameterSpec::choice("stepper", default_stepper, stepper_names(),
-                              "GSL ODE stepper for eqs. (7), (9)"),
-        ParameterSpec::real("tolerance", 1e-10, "1",
-                            "adaptive control: relative local error of h and delta per step")
-            .positive()
-            .below(1e-2),
-        ParameterSpec::integer("samples_per_decade", 20, "1", "outputs per decade of h").at_least(4),
-        ParameterSpec::real("regime_width", 0.1, "1",
-                            "a regime counts as reached where its first-order width w (Stokes (R/h)(3 - "
-                            "2R/(R + delta)), Poiseuille "
-                            "h/R + 3 delta/h, Hertz 3h/R + 4h/(3 delta)) is at most this")
-            .positive()
-            .below(1.0),
-    };
+    std::string stepper = default_stepper;
+    double tolerance = 1e-10;
+    int samples_per_decade = 20;
+    double regime_width = 0.1;
+};
+
+template <class Options>
+void bind_integrator(OptionBinding<Options>& b, IntegratorChoice Options::*integrator)
+{
+    b.word(path(integrator, &IntegratorChoice::stepper), "stepper", stepper_names(),
+           "GSL ODE stepper for eqs. (7), (9)");
+    b.real(path(integrator, &IntegratorChoice::tolerance), "tolerance", "1",
+           "adaptive control: relative local error of h and delta per step")
+        .positive()
+        .below(1e-2);
+    b.integer(path(integrator, &IntegratorChoice::samples_per_decade), "samples_per_decade", "1",
+              "outputs per decade of h")
+        .at_least(4);
+    b.real(path(integrator, &IntegratorChoice::regime_width), "regime_width", "1",
+           "a regime counts as reached where its first-order width w (Stokes (R/h)(3 - 2R/(R + delta)), "
+           "Poiseuille h/R + 3 delta/h, Hertz 3h/R + 4h/(3 delta)) is at most this")
+        .positive()
+        .below(1.0);
 }
 
-void run_approach(const Parameters& p, RunContext& context)
+IntegratorSettings adaptive_settings(const IntegratorChoice& integrator)
 {
-    const double kappa = p.real("kappa");
-    const ApproachProblem problem = pair_problem(kappa, p.real("h0"), p.real("h_min"));
     IntegratorSettings settings;
-    settings.stepper = p.choice("stepper");
-    settings.tolerance = p.real("tolerance");
-    settings.fixed_step = p.choice("step_control") == "fixed";
-    settings.dt = p.real("dt") / kappa; // R/V = eta R^2 / F = 1/kappa in scene units
-    settings.samples_per_decade = static_cast<double>(p.integer("samples_per_decade"));
-    settings.max_steps = p.integer("max_steps");
+    settings.stepper = integrator.stepper;
+    settings.tolerance = integrator.tolerance;
+    settings.samples_per_decade = static_cast<double>(integrator.samples_per_decade);
+    return settings;
+}
+
+struct ApproachOptions
+{
+    double kappa = 1e-6;
+    double h0 = 100.0;
+    double h_min = 1e-6;
+    bool fixed_step = false;
+    double dt = 1.0; // [R/V]
+    int max_steps = 50'000'000;
+    int timing_repeats = 1;
+    IntegratorChoice integrator;
+};
+
+OptionBinding<ApproachOptions> approach_binding()
+{
+    OptionBinding<ApproachOptions> b;
+    b.real(&ApproachOptions::kappa, "kappa", "1", "renormalised force F_ext/(E R^2), eq. (6)")
+        .positive()
+        .at_most(1.0);
+    b.real(&ApproachOptions::h0, "h0", "R", "initial gap (the paper: 100 R)").positive();
+    b.real(&ApproachOptions::h_min, "h_min", "R", "the run stops when h reaches h_min").positive();
+    b.choice(&ApproachOptions::fixed_step, "step_control", {{"adaptive", false}, {"fixed", true}},
+             "adaptive error control, or a fixed step dt (stability study)");
+    b.real(&ApproachOptions::dt, "dt", "R/V", "fixed step (step_control = fixed)").positive();
+    b.integer(&ApproachOptions::max_steps, "max_steps", "1", "guard against a stalled run").at_least(1);
+    b.integer(&ApproachOptions::timing_repeats, "timing_repeats", "1",
+              "integrations timed (best of); results are identical")
+        .at_least(1);
+    bind_integrator(b, &ApproachOptions::integrator);
+    return b;
+}
+
+void run_approach(const ApproachOptions& options, RunContext& context)
+{
+    const double kappa = options.kappa;
+    const ApproachProblem problem = pair_problem(kappa, options.h0, options.h_min);
+    IntegratorSettings settings = adaptive_settings(options.integrator);
+    settings.fixed_step = options.fixed_step;
+    settings.dt = options.dt / kappa; // R/V = eta R^2 / F = 1/kappa in scene units
+    settings.max_steps = options.max_steps;
 
     // Wall time of the integration alone (best of `timing_repeats`, the runs being identical).
     ApproachRun run;
     double seconds = INFINITY;
-    for (long long r = 0; r < p.integer("timing_repeats"); ++r) {
+    for (int r = 0; r < options.timing_repeats; ++r) {
         const auto start = std::chrono::steady_clock::now();
         run = integrate_approach(problem, settings);
         seconds = std::min(seconds, seconds_since(start));
     }
     context.count_steps(run.steps);
-    const ApproachAnalysis an = analyse_approach(problem, run.samples, p.real("regime_width"));
+    const ApproachAnalysis an = analyse_approach(problem, run.samples, options.integrator.regime_width);
     // ParaView frames, one per row of approach.dat (--vtk-every N: every N-th), time value t in R/V as there:
     // the two spheres and their pair, field data time t [s] and gap_min h [m].
     if (auto* series = context.vtk())
@@ -163,7 +210,7 @@ void run_approach(const Parameters& p, RunContext& context)
     double hertz_error = -1;
     for (std::size_t k = 0; k < run.samples.size(); ++k)
         if (regime_width(Regime::hertz, R, run.samples[k].h, run.samples[k].rates.delta) <=
-            p.real("regime_width"))
+            options.integrator.regime_width)
             hertz_error = std::max(hertz_error, an.h_error[k]);
     sum["h_error_hertz"] = hertz_error >= 0 ? nlohmann::json(hertz_error) : nlohmann::json(nullptr);
     sum["stiffness_max"] = stiffness_max;
@@ -188,18 +235,40 @@ void run_approach(const Parameters& p, RunContext& context)
     sum["gap_rate_derivative_max"] = rate_max / kappa;
 }
 
-void run_phase_diagram(const Parameters& p, RunContext& context)
+struct PhaseDiagramOptions
 {
-    const double kappa_min = p.real("kappa_min"), kappa_max = p.real("kappa_max");
-    const long long count = p.integer("kappa_count");
-    if (!(kappa_min < kappa_max))
-        throw InputError("kappa_min = " + std::to_string(kappa_min) +
-                         " must be below kappa_max = " + std::to_string(kappa_max));
-    const double threshold = p.real("regime_width");
-    IntegratorSettings settings;
-    settings.stepper = p.choice("stepper");
-    settings.tolerance = p.real("tolerance");
-    settings.samples_per_decade = static_cast<double>(p.integer("samples_per_decade"));
+    double kappa_min = 1e-6, kappa_max = 0.3;
+    int kappa_count = 12;
+    double h0 = 100.0;
+    double h_min = 1e-7;
+    IntegratorChoice integrator;
+};
+
+OptionBinding<PhaseDiagramOptions> phase_diagram_binding()
+{
+    OptionBinding<PhaseDiagramOptions> b;
+    b.real(&PhaseDiagramOptions::kappa_min, "kappa_min", "1", "smallest kappa (the paper: 1e-6)").positive();
+    b.real(&PhaseDiagramOptions::kappa_max, "kappa_max", "1", "largest kappa (the paper: 0.3)")
+        .positive()
+        .at_most(1.0);
+    b.integer(&PhaseDiagramOptions::kappa_count, "kappa_count", "1", "log-spaced kappa values").at_least(2);
+    b.real(&PhaseDiagramOptions::h0, "h0", "R", "initial gap (the paper: 100 R)").positive();
+    b.real(&PhaseDiagramOptions::h_min, "h_min", "R", "final gap").positive();
+    bind_integrator(b, &PhaseDiagramOptions::integrator);
+    b.check([](const PhaseDiagramOptions& o) {
+        if (!(o.kappa_min < o.kappa_max))
+            throw InputError("kappa_min = " + std::to_string(o.kappa_min) +
+                             " must be below kappa_max = " + std::to_string(o.kappa_max));
+    });
+    return b;
+}
+
+void run_phase_diagram(const PhaseDiagramOptions& options, RunContext& context)
+{
+    const double kappa_min = options.kappa_min, kappa_max = options.kappa_max;
+    const int count = options.kappa_count;
+    const double threshold = options.integrator.regime_width;
+    const IntegratorSettings settings = adaptive_settings(options.integrator);
 
     auto& table = context.table(
         "phase_diagram.dat",
@@ -222,7 +291,7 @@ void run_phase_diagram(const Parameters& p, RunContext& context)
     for (long long i = 0; i < count; ++i) {
         const double kappa =
             kappa_min * std::pow(kappa_max / kappa_min, static_cast<double>(i) / (count - 1));
-        const ApproachProblem problem = pair_problem(kappa, p.real("h0"), p.real("h_min"));
+        const ApproachProblem problem = pair_problem(kappa, options.h0, options.h_min);
         const ApproachRun run = integrate_approach(problem, settings);
         total_steps += run.steps;
         const ApproachAnalysis an = analyse_approach(problem, run.samples, threshold);
@@ -303,16 +372,48 @@ void require_approach_completed(double gap_final, double h_min, long steps)
                                  " R by the pair reference's approach time");
 }
 
-void run_many(const Parameters& p, RunContext& context)
+struct ManyOptions
 {
-    const long long n = p.integer("particles");
-    const bool line = p.choice("geometry") == "line";
-    if (!line && n != 3)
-        throw InputError(
-            "geometry = cluster needs particles = 3 (an equilateral triangle); got particles = " +
-            std::to_string(n));
-    const double F = p.real("force"), h0 = p.real("h0"), h_min = p.real("h_min");
-    if (!(h_min < h0)) throw InputError("h_min must be below h0");
+    int particles = 2;
+    bool line = true;              // a line compressed at its ends, else a triangle pushed to its centre
+    double force = 1e-3;           // [E R^2]
+    double h0 = 1.0, h_min = 1e-4; // [R]
+    double tolerance = 1e-10;
+    int outputs = 120;
+};
+
+OptionBinding<ManyOptions> many_binding()
+{
+    OptionBinding<ManyOptions> b;
+    b.integer(&ManyOptions::particles, "particles", "1", "number of particles").at_least(2).at_most(64);
+    b.choice(&ManyOptions::line, "geometry", {{"line", true}, {"cluster", false}},
+             "a line compressed at its ends, or a triangle (particles = 3) pushed to its centre");
+    b.real(&ManyOptions::force, "force", "E R^2", "external force on each loaded particle (kappa)")
+        .positive()
+        .at_most(1.0);
+    b.real(&ManyOptions::h0, "h0", "R", "initial gap of every bond").positive();
+    b.real(&ManyOptions::h_min, "h_min", "R", "stop when the smallest gap reaches h_min").positive();
+    b.real(&ManyOptions::tolerance, "tolerance", "1", "rk8pd relative (and delta-scaled absolute) tolerance")
+        .positive()
+        .below(1e-2);
+    b.integer(&ManyOptions::outputs, "outputs", "1",
+              "output times, log-spaced over the 7 decades before the pair reaches h_min")
+        .at_least(4);
+    b.check([](const ManyOptions& o) {
+        if (!o.line && o.particles != 3)
+            throw InputError(
+                "geometry = cluster needs particles = 3 (an equilateral triangle); got particles = " +
+                std::to_string(o.particles));
+        if (!(o.h_min < o.h0)) throw InputError("h_min must be below h0");
+    });
+    return b;
+}
+
+void run_many(const ManyOptions& options, RunContext& context)
+{
+    const long long n = options.particles;
+    const bool line = options.line;
+    const double F = options.force, h0 = options.h0, h_min = options.h_min;
     const Material m;
     ManyParticleSystem system{m, paper_contact_laws(m), line ? 1 : 2, {}, {}};
     // Pair force of every bond in the balanced configuration: F on a line, F/(2 sin(pi/3)) = F/sqrt3 in the
@@ -320,7 +421,7 @@ void run_many(const Parameters& p, RunContext& context)
     const double pair_force = line ? F : F / std::sqrt(3.0);
     const double delta0 = balanced_deflection(system.laws, h0, pair_force);
     const double distance0 = 2.0 * m.radius + h0 - 2.0 * delta0; // eq. (2)
-    refuse_unresolved_deflection(delta0, distance0, p.real("tolerance"), F);
+    refuse_unresolved_deflection(delta0, distance0, options.tolerance, F);
     std::vector<double> positions;
     if (line) {
         for (long long i = 0; i < n; ++i)
@@ -356,13 +457,13 @@ void run_many(const Parameters& p, RunContext& context)
     const ApproachProblem pair{m, system.laws, constant_loading(pair_force), h0, h_min};
     const double t_end = approach_time_reference(pair, h0, h_min);
     std::vector<double> times;
-    const long long outputs = p.integer("outputs");
+    const long long outputs = options.outputs;
     for (long long k = 1; k <= outputs; ++k)
         times.push_back(t_end * std::pow(1e-7, 1.0 - static_cast<double>(k) / outputs) *
                         (k == outputs ? 1.0 + 1e-9 : 1.0));
     long steps = 0;
     const std::vector<ManySample> samples =
-        integrate_many(system, positions, gaps, times, h_min, p.real("tolerance"), delta0, steps);
+        integrate_many(system, positions, gaps, times, h_min, options.tolerance, delta0, steps);
     context.count_steps(steps);
     // ParaView frames, one per output sample (--vtk-every N: every N-th) as in many.dat, time value t in
     // R/V: the particles and the pairs, field data time t [s] and gap_min h [m].
@@ -434,68 +535,22 @@ void run_many(const Parameters& p, RunContext& context)
 
 void register_sd_scenes(SceneRegistry& registry)
 {
-    std::vector<ParameterSpec> approach{
-        ParameterSpec::real("kappa", 1e-6, "1", "renormalised force F_ext/(E R^2), eq. (6)")
-            .positive()
-            .at_most(1.0),
-        ParameterSpec::real("h0", 100.0, "R", "initial gap (the paper: 100 R)").positive(),
-        ParameterSpec::real("h_min", 1e-6, "R", "the run stops when h reaches h_min").positive(),
-        ParameterSpec::choice("step_control", "adaptive", {"adaptive", "fixed"},
-                              "adaptive error control, or a fixed step dt (stability study)"),
-        ParameterSpec::real("dt", 1.0, "R/V", "fixed step (step_control = fixed)").positive(),
-        ParameterSpec::integer("max_steps", 50'000'000, "1", "guard against a stalled run").at_least(1),
-        ParameterSpec::integer("timing_repeats", 1, "1",
-                               "integrations timed (best of); results are identical")
-            .at_least(1),
-    };
-    for (auto& spec : integrator_parameters())
-        approach.push_back(spec);
-    registry.add(Scene{"sd.approach",
-                       "two lubricated elastic spheres under constant force: delta(h), h-dot(h), local "
-                       "exponents (SD Fig. 3)",
-                       approach, run_approach}
+    registry.add(bound_scene("sd.approach",
+                             "two lubricated elastic spheres under constant force: delta(h), h-dot(h), local "
+                             "exponents (SD Fig. 3)",
+                             approach_binding(), run_approach)
                      .with_vtk());
-
-    std::vector<ParameterSpec> diagram{
-        ParameterSpec::real("kappa_min", 1e-6, "1", "smallest kappa (the paper: 1e-6)").positive(),
-        ParameterSpec::real("kappa_max", 0.3, "1", "largest kappa (the paper: 0.3)").positive().at_most(1.0),
-        ParameterSpec::integer("kappa_count", 12, "1", "log-spaced kappa values").at_least(2),
-        ParameterSpec::real("h0", 100.0, "R", "initial gap (the paper: 100 R)").positive(),
-        ParameterSpec::real("h_min", 1e-7, "R", "final gap").positive(),
-    };
-    for (auto& spec : integrator_parameters())
-        diagram.push_back(spec);
     registry.add(
-        Scene{"sd.phase_diagram",
-              "regimes crossed by constant-kappa approaches and the Poiseuille-Hertz crossover (SD Fig. 3b)",
-              diagram, run_phase_diagram}
+        bound_scene(
+            "sd.phase_diagram",
+            "regimes crossed by constant-kappa approaches and the Poiseuille-Hertz crossover (SD Fig. 3b)",
+            phase_diagram_binding(), run_phase_diagram)
             .without_vtk("a sweep of independent approaches over kappa, each ending at h = h_min: not a "
                          "time series; draw one approach with sd.approach --set kappa=K --vtk"));
-
-    registry.add(Scene{
-        "sd.many",
-        "several particles, note [20]: centre velocities from the linear system, gaps from eq. (7)",
-        {
-            ParameterSpec::integer("particles", 2, "1", "number of particles").at_least(2).at_most(64),
-            ParameterSpec::choice(
-                "geometry", "line", {"line", "cluster"},
-                "a line compressed at its ends, or a triangle (particles = 3) pushed to its centre"),
-            ParameterSpec::real("force", 1e-3, "E R^2", "external force on each loaded particle (kappa)")
-                .positive()
-                .at_most(1.0),
-            ParameterSpec::real("h0", 1.0, "R", "initial gap of every bond").positive(),
-            ParameterSpec::real("h_min", 1e-4, "R", "stop when the smallest gap reaches h_min").positive(),
-            ParameterSpec::real("tolerance", 1e-10, "1",
-                                "rk8pd relative (and delta-scaled absolute) tolerance")
-                .positive()
-                .below(1e-2),
-            ParameterSpec::integer(
-                "outputs", 120, "1",
-                "output times, log-spaced over the 7 decades before the pair reaches h_min")
-                .at_least(4),
-        },
-        run_many,
-    }
+    registry.add(bound_scene("sd.many",
+                             "several particles, note [20]: centre velocities from the linear system, gaps "
+                             "from eq. (7)",
+                             many_binding(), run_many)
                      .with_vtk());
 }
 
