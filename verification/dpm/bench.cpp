@@ -70,17 +70,22 @@ void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
     CHECK(s["peak_memory_mib"].get<double>() > 0);
 }
 
+// The 2D case of both tests: 6 shells of 6/8 vertices jammed at P_t = 1e-5, one target above; plus `extra`.
+std::vector<std::pair<std::string, std::string>>
+six_shells(std::vector<std::pair<std::string, std::string>> extra = {})
+{
+    std::vector<std::pair<std::string, std::string>> settings{
+        {"model", "shell"},         {"particles", "6"}, {"nodes_small", "6"},    {"nodes_large", "8"},
+        {"pressure_onset", "1e-5"}, {"pressures", "1"}, {"pressure_max", "2e-5"}};
+    settings.insert(settings.end(), extra.begin(), extra.end());
+    return settings;
+}
+
 } // namespace
 
 TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm.jam's protocol [issue 19]")
 {
-    const auto [summary, p] = run_bench({{"model", "shell"},
-                                         {"particles", "6"},
-                                         {"nodes_small", "6"},
-                                         {"nodes_large", "8"},
-                                         {"pressure_onset", "1e-5"},
-                                         {"pressures", "1"},
-                                         {"pressure_max", "2e-5"}});
+    const auto [summary, p] = run_bench(six_shells());
     check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
     const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
@@ -94,14 +99,7 @@ TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm
 TEST_CASE("dpm.bench in 2D with relaxation = fire_newton: the finisher's counts are those of dpm.jam's "
           "protocol [issue 19]")
 {
-    const auto [summary, p] = run_bench({{"model", "shell"},
-                                         {"particles", "6"},
-                                         {"nodes_small", "6"},
-                                         {"nodes_large", "8"},
-                                         {"pressure_onset", "1e-5"},
-                                         {"pressures", "1"},
-                                         {"pressure_max", "2e-5"},
-                                         {"relaxation", "fire_newton"}});
+    const auto [summary, p] = run_bench(six_shells({{"relaxation", "fire_newton"}}));
     check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
     const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);

@@ -22,6 +22,7 @@ using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::fcc_crystal;
 using softgrain::verification::polished_packing2d;
+using softgrain::verification::polished_packing3d;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -93,21 +94,6 @@ ForceParts force_parts(const DpmSystem& s, const Eigen::VectorXd& x)
     total_energy(s, x, &parts.shape, nullptr, shape_part);
     total_energy(s, x, &parts.contact, nullptr, interaction_part);
     return parts;
-}
-
-// A 3D packing of 8 icosahedral shells jammed at P_t = 1e-5 k_v v0, Newton-polished (as sparse_modes.cpp).
-Jam3dResult jammed_packing3d(std::uint64_t seed)
-{
-    Jam3dOptions o;
-    o.particles = 8;
-    o.mesh = "icosahedron";
-    o.pressure_onset = 1e-5;
-    o.seed = seed;
-    Jam3dResult j = jam3d(o);
-    polish_for_modes([&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                          Eigen::MatrixXd* h) { return total_energy3d(j.system, y, g, h); },
-                     j.x, j.pressure_unit);
-    return j;
 }
 
 // What the checks of a jammed packing need in either dimension.
@@ -292,7 +278,8 @@ TEST_CASE("linear-response G of jammed 2D packings against the finite-strain G o
 TEST_CASE("linear-response G of a jammed 3D shell packing against the finite-strain G and a dense "
           "pseudo-inverse [DPM sec. 9.4.3, Fig. 9.16b]")
 {
-    const Jam3dResult j = jammed_packing3d(1); // seed 3's packing has no contact across the y boundary: G = 0
+    const Jam3dResult j =
+        polished_packing3d(8, 1); // seed 3's packing has no contact across the y boundary: G = 0
     const DpmSystem3d& s = j.system;
     PackingUnderTest p;
     p.unit = j.pressure_unit;

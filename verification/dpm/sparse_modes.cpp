@@ -29,23 +29,10 @@
 using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::polished_packing2d;
+using softgrain::verification::polished_packing3d;
 using softgrain::verification::round_off;
 
 namespace {
-
-Jam3dResult jammed_packing3d(int particles, std::uint64_t seed)
-{
-    Jam3dOptions o; // icosahedral shells at P_t = 1e-5 k_v v0
-    o.particles = particles;
-    o.mesh = "icosahedron";
-    o.pressure_onset = 1e-5;
-    o.seed = seed;
-    Jam3dResult j = jam3d(o);
-    polish_for_modes([&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                          Eigen::MatrixXd* h) { return total_energy3d(j.system, y, g, h); },
-                     j.x, j.pressure_unit);
-    return j;
-}
 
 void check_same_matrix(const Eigen::MatrixXd& dense, const Eigen::SparseMatrix<double>& sparse)
 {
@@ -141,7 +128,7 @@ TEST_CASE("sparse dynamical matrix equals the dense one: 2D and 3D, rough and sm
     }
     SUBCASE("3D icosahedral shells, N = 8")
     {
-        Jam3dResult j = jammed_packing3d(8, 3);
+        Jam3dResult j = polished_packing3d(8, 3);
         for (const InteractionKind contact : {InteractionKind::rough, InteractionKind::smooth}) {
             j.system.interaction = contact;
             CAPTURE(static_cast<int>(contact));
@@ -166,7 +153,7 @@ TEST_CASE("lowest modes by shift-and-invert Lanczos equal the dense spectrum's [
     }
     SUBCASE("3D icosahedral shells, N = 8")
     {
-        const Jam3dResult j = jammed_packing3d(8, 3);
+        const Jam3dResult j = polished_packing3d(8, 3);
         Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(j.x.size(), j.x.size());
         total_energy3d(j.system, j.x, nullptr, &dense);
         const Eigen::SparseMatrix<double> sparse = sparse_dynamical_matrix3d(j.system, j.x);

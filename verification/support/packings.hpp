@@ -1,8 +1,9 @@
-// Packings shared by the DPM tests: an fcc crystal of one-vertex particles (exact shear modulus) and a small
-// jammed 2D packing polished to round-off forces (the reference system of the mode and modulus tests).
+// Packings shared by the DPM tests: an fcc crystal of one-vertex particles (exact shear modulus) and small
+// jammed 2D and 3D packings polished to round-off forces (the reference systems of the mode and modulus tests).
 #pragma once
 
 #include "dpm/jam.hpp"
+#include "dpm/jam3d.hpp"
 #include "dpm/modes.hpp"
 #include "dpm/system3d.hpp"
 
@@ -48,6 +49,22 @@ inline dpm::JamResult polished_packing2d(const std::string& model, int particles
     dpm::JamResult r = dpm::jam(o);
     dpm::polish_for_modes(r.system, r.x, r.pressure_unit);
     return r;
+}
+
+// `particles` icosahedral shells jammed by the 3D protocol at P_t = 1e-5 k_v v0 and Newton-polished to
+// round-off forces.
+inline dpm::Jam3dResult polished_packing3d(int particles, std::uint64_t seed)
+{
+    dpm::Jam3dOptions o;
+    o.particles = particles;
+    o.mesh = "icosahedron";
+    o.pressure_onset = 1e-5;
+    o.seed = seed;
+    dpm::Jam3dResult j = dpm::jam3d(o);
+    dpm::polish_for_modes([&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
+                               Eigen::MatrixXd* h) { return dpm::total_energy3d(j.system, y, g, h); },
+                          j.x, j.pressure_unit);
+    return j;
 }
 
 } // namespace softgrain::verification
