@@ -3,7 +3,10 @@
 //   (X, h) -> delta (eq. 2) -> a(h, delta) (eq. 5) -> zeta (eq. 4), C and D (from eq. 8)
 //          -> h-dot (eq. 7) and X-dot (eq. 9), given F_ext and dF_ext/dt.
 //
-// Units: lengths in m, forces in N (compressive F_ext > 0), rates in m/s. No inertia (Stokes regime).
+// Units: lengths in m, forces in N, rates in m/s. Sign: F_ext > 0 pushes the particles together; h-dot < 0
+// while the gap closes. No inertia (Stokes regime).
+// Valid for a gap h > 0 (the lubrication friction zeta of eq. (4) diverges at contact), deflections
+// 0 <= delta < R (eq. (2) with the laws of contact_laws.hpp) and equal spheres of radius R.
 #pragma once
 
 #include "sd/contact_laws.hpp"

@@ -12,6 +12,10 @@
 // Unknown lambda is fixed by psi = pi/2 at the quarter arc length pi R/2 - c (inextensibility); the wall gap
 // b = 2 int sin psi ds, the width a = 2 x(end), the area 4 int x sin psi ds. Solved with GSL (rk8pd ODE
 // steps, Brent root finding) to ~1e-9.
+// Sign: the strain eps = 1 - b/b0 and the plate force F are positive in compression. Units: F R^2/EI, a/b0,
+// L_c/b0 and V/V0 are dimensionless, so one solution serves every R and EI.
+// Valid for an inextensible, unshearable ring (thin: h/R -> 0) and frictionless plates, for 0 <= eps < 0.9;
+// a ring of finite thickness departs from it by its stretching, O((h/R)^2) in F.
 #pragma once
 
 namespace softgrain::spd {
