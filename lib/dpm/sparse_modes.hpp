@@ -30,6 +30,8 @@ struct LowestModes
     int factorizations = 0; // shifts tried until the factor was definite
     int restarts = 0;       // of the shift-and-invert Lanczos iteration
     int solves = 0;         // applications of (M - sigma)^{-1}
+    int passes = 0;         // Lanczos passes: 1, plus one per deflated search for modes a pass missed
+    double completeness_bound = 0; // tau of the last pass that found the count incomplete (0: none did)
 };
 
 // Number of eigenvalues of the symmetric sparse m below tau: the negative pivots of the LDL^T of m - tau
@@ -49,10 +51,11 @@ double largest_eigenvalue(const Eigen::SparseMatrix<double>& m);
 // The condition number of m - sigma, at most (1 + 1e6) for the first shift, costs at most 1e6 eps in the
 // solves, along the near-null directions the iteration seeks. Convergence: Spectra's relative residual
 // 1e-12 on 1/(lambda - sigma), i.e. lambda to 1e-12 (lambda - sigma) or better; the Krylov space holds
-// max(2 count + 1, count + 40) vectors (at most rows). NumericalError with the converged count, the shift
-// and the restarts when the iteration does not converge in 1000 restarts, or when the modes found are not
-// the `count` lowest: the inertia of M - tau, tau 1e-9 R above the highest found, counts the eigenvalues
-// below it (single-vector Lanczos can miss copies of a degenerate eigenvalue).
+// max(2 count + 1, count + 40) vectors (at most rows). Completeness: the inertia of M - tau, tau 1e-9 R above
+// the highest found, counts the eigenvalues below it; single-vector Lanczos can miss copies of a degenerate
+// eigenvalue, and those are sought by further passes on (M - sigma)^{-1} with the modes found deflated
+// (projected out). NumericalError with the converged count, the shift and the restarts when the iteration
+// does not converge in 1000 restarts, or when a deflated pass finds no missing mode.
 LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count);
 
 } // namespace softgrain::dpm
