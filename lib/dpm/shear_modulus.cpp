@@ -27,6 +27,7 @@ ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorX
     for (int step = 0; step <= steps; ++step) {
         if (step > 0) packing.shear(x, dgamma);
         minimise(step);
+        if (step == 0) out.equilibrium = x;
         strain.push_back(step * dgamma);
         out.shear_stress.push_back(packing.stress(x));
         if (observe) observe(step, x, out.shear_stress.back());

@@ -23,6 +23,7 @@ struct ShearModulusResult
     double modulus = 0;               // G [stress unit]
     std::vector<double> shear_stress; // -Sigma_xy at gamma = 0, dgamma, 2 dgamma, ...
     double force_max = 0;             // largest force component after the last minimisation
+    Eigen::VectorXd equilibrium;      // x after the minimisation at gamma = 0 (linear_shear_modulus.hpp)
 };
 
 // What the procedure needs from a periodic packing of any dimension; each operation acts on the packing's own

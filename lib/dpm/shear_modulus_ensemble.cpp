@@ -11,29 +11,37 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
                                 RunContext& context)
 {
     const std::string& unit = tables.pressure_unit;
-    auto& each = context.table(tables.per_packing, {{"packing", "1", "ensemble member (seed - first seed)"},
-                                                    {"P", unit, tables.pressure_meaning},
-                                                    {"phi", "1", "packing fraction"},
-                                                    {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"}});
+    auto& each =
+        context.table(tables.per_packing, {{"packing", "1", "ensemble member (seed - first seed)"},
+                                           {"P", unit, tables.pressure_meaning},
+                                           {"phi", "1", "packing fraction"},
+                                           {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"},
+                                           {"G_linear", unit, "linear response G_affine - Xi^T H^+ Xi"},
+                                           {"negative_modes", "1", "negative eigenvalues of H"}});
     EnsembleModulus out;
     const auto packings = static_cast<double>(members.size());
     const std::size_t levels = members.front().pressure.size();
-    std::vector<double> mean_p(levels, 0.0), mean_g(levels, 0.0);
+    std::vector<double> mean_p(levels, 0.0), mean_g(levels, 0.0), mean_linear(levels, 0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         const ModulusMember& m = members[k];
         out.fire_iterations += m.fire_iterations;
         out.force_max = std::max(out.force_max, m.force_max);
         for (std::size_t l = 0; l < levels; ++l) {
-            each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l]});
+            each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l], m.modulus_linear[l],
+                      double(m.negative_modes[l])});
             mean_p[l] += m.pressure[l] / packings;
             mean_g[l] += m.modulus[l] / packings;
+            mean_linear[l] += m.modulus_linear[l] / packings;
+            if (m.negative_modes[l] > 0) ++out.saddles;
         }
     }
-    auto& mean = context.table(
-        tables.mean, {{"P", unit, "ensemble mean pressure"}, {"G", unit, "ensemble mean shear modulus <G>"}});
+    auto& mean =
+        context.table(tables.mean, {{"P", unit, "ensemble mean pressure"},
+                                    {"G", unit, "ensemble mean shear modulus <G>"},
+                                    {"G_linear", unit, "ensemble mean linear-response shear modulus"}});
     std::vector<double> fitted_p, fitted_g;
     for (std::size_t l = 0; l < levels; ++l) {
-        mean.row({mean_p[l], mean_g[l]});
+        mean.row({mean_p[l], mean_g[l], mean_linear[l]});
         if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
             fitted_p.push_back(mean_p[l]);
             fitted_g.push_back(mean_g[l]);
@@ -57,6 +65,8 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
     }
     out.G_onset = mean_g.front();
     out.G_max_pressure = mean_g.back();
+    out.G_linear_onset = mean_linear.front();
+    out.G_linear_max_pressure = mean_linear.back();
     if (const auto line = fit_power_law(fitted_p, fitted_g)) {
         out.eta = line->slope;
         out.eta_error = std::sqrt(line->slope_variance);
@@ -75,6 +85,9 @@ void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, 
     s["shear_modulus_exponent_spread" + suffix] =
         e.eta_spread ? nlohmann::json(*e.eta_spread) : nlohmann::json(nullptr);
     s["packings_with_slope" + suffix] = e.packings_with_slope;
+    s["G_linear_onset" + suffix] = e.G_linear_onset;
+    s["G_linear_max_pressure" + suffix] = e.G_linear_max_pressure;
+    s["saddles" + suffix] = e.saddles;
 }
 
 } // namespace softgrain::dpm

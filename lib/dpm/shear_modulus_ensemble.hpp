@@ -5,6 +5,7 @@
 // onset with <G> > 0 (decision dpm-shear-modulus).
 #pragma once
 
+#include "dpm/linear_shear_modulus.hpp"
 #include "dpm/shear_modulus.hpp"
 
 #include <nlohmann/json.hpp>
@@ -20,15 +21,18 @@ class RunContext;
 namespace softgrain::dpm {
 
 // One packing of the ensemble: its pressures (onset first), packing fractions and shear moduli, in the
-// model's pressure unit.
+// model's pressure unit: `modulus` from the strain steps, `modulus_linear` the linear response at the
+// same equilibrium (linear_shear_modulus.hpp), with the negative modes of its Hessian (a saddle).
 struct ModulusMember
 {
-    std::vector<double> pressure, phi, modulus;
+    std::vector<double> pressure, phi, modulus, modulus_linear;
+    std::vector<int> negative_modes;
     long fire_iterations = 0;
     double force_max = 0; // largest force after any Newton minimisation [system units]
 };
 // A member travels between MPI ranks as JSON (core/ensemble.hpp).
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, fire_iterations, force_max)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, modulus_linear, negative_modes,
+                                   fire_iterations, force_max)
 
 // Called after each minimisation of the shear at each state: the state's index, then as ShearedSystemObserver.
 template <class System>
@@ -56,6 +60,9 @@ ModulusMember moduli_at_states(System system, const States& states, double press
         m.pressure.push_back(state.pressure);
         m.phi.push_back(state.phi);
         m.modulus.push_back(g.modulus / pressure_unit);
+        const LinearShearModulus linear = linear_shear_modulus(system, g.equilibrium);
+        m.modulus_linear.push_back(linear.modulus / pressure_unit);
+        m.negative_modes.push_back(linear.negative_modes);
         m.force_max = std::max(m.force_max, g.force_max);
     }
     return m;
@@ -64,8 +71,10 @@ ModulusMember moduli_at_states(System system, const States& states, double press
 // The ensemble's results; eta absent with fewer than two levels above onset with <G> > 0.
 struct EnsembleModulus
 {
-    double G_onset = 0, G_max_pressure = 0; // <G> at P_t and at the largest pressure
-    std::optional<double> eta, eta_error;   // slope of ln<G> against ln<P> and its standard error
+    double G_onset = 0, G_max_pressure = 0;               // <G> at P_t and at the largest pressure
+    double G_linear_onset = 0, G_linear_max_pressure = 0; // the same for the linear-response G
+    int saddles = 0;                      // states (packing, pressure) whose Hessian has a negative mode
+    std::optional<double> eta, eta_error; // slope of ln<G> against ln<P> and its standard error
     // The same slope fitted to each packing's own G(P) above onset (where G > 0 at >= 2 pressures): their
     // sample standard deviation over the packings (>= 2 of them) and how many had a slope. The ensemble's
     // exponent is known to about spread / sqrt(packings) (the size a claim on eta needs).
@@ -75,7 +84,8 @@ struct EnsembleModulus
     double force_max = 0;
 };
 
-// Names and units of the two tables: per packing (packing, P, phi, G) and ensemble mean (P, G).
+// Names and units of the two tables: per packing (packing, P, phi, G, G_linear, negative_modes) and
+// ensemble mean (P, G, G_linear).
 struct ModulusTables
 {
     std::string per_packing = "modulus.dat", mean = "mean_modulus.dat";
@@ -87,8 +97,9 @@ struct ModulusTables
 EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
                                 RunContext& context);
 
-// Summary keys G_onset, G_max_pressure, shear_modulus_exponent, shear_modulus_exponent_error and force_max,
-// each followed by `suffix` (null for an absent exponent).
+// Summary keys G_onset, G_max_pressure, shear_modulus_exponent, shear_modulus_exponent_error, force_max,
+// G_linear_onset, G_linear_max_pressure and saddles, each followed by `suffix` (null for an absent
+// exponent).
 void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, nlohmann::json& summary);
 
 } // namespace softgrain::dpm
