@@ -1,5 +1,5 @@
 // The catalogue of every scene softgrain knows: each method registers its own.
-#include "compare/compare_scenes.hpp"
+#include "compare/scenes/scenes.hpp"
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"

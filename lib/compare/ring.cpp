@@ -140,13 +140,6 @@ RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<vo
 
 } // namespace
 
-RingMethod ring_method_from_name(const std::string& name)
-{
-    if (name == "spd") return RingMethod::spd;
-    if (name == "dpm") return RingMethod::dpm;
-    throw InputError("model = '" + name + "': allowed spd | dpm");
-}
-
 RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress,
                              const RingFrameObserver& frame)
 {
@@ -170,6 +163,26 @@ RingErrors elastica_errors(const RingObservation& o)
     const spd::ElasticaState el = spd::elastica_ring_between_plates(o.strain);
     return {std::abs(o.force / el.force - 1), std::abs(o.width / el.width - 1),
             std::abs(o.volume - el.volume), std::abs(o.contact_length - el.contact_length)};
+}
+
+bool reported_strain(double strain)
+{
+    const double tenths = 10 * strain;
+    return strain > 0 && std::abs(tenths - std::round(tenths)) <= 1e-6;
+}
+
+std::optional<RingErrors> largest_elastica_errors(const RingComparison& comparison)
+{
+    std::optional<RingErrors> worst;
+    for (const RingObservation& state : comparison.states) {
+        if (!reported_strain(state.strain)) continue;
+        const RingErrors errors = elastica_errors(state);
+        const RingErrors so_far = worst.value_or(RingErrors{});
+        worst = RingErrors{std::max(so_far.force, errors.force), std::max(so_far.width, errors.width),
+                           std::max(so_far.volume, errors.volume),
+                           std::max(so_far.contact_length, errors.contact_length)};
+    }
+    return worst;
 }
 
 } // namespace softgrain::compare
