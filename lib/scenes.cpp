@@ -4,7 +4,7 @@
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"
 #include "sd/sd_scenes.hpp"
-#include "spd/spd_scenes.hpp"
+#include "spd/scenes/scenes.hpp"
 #include "vsm/vsm_scenes.hpp"
 
 namespace softgrain {

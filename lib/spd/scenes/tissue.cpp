@@ -1,91 +1,19 @@
 // Scene spd.tissue (Trivino et al., section 6, Figs. 30-34): tensile fracture of a cellular tissue.
+#include "spd/tissue.hpp"
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
+#include "spd/scenes/scenes.hpp"
 #include "spd/shell_model.hpp"
-#include "spd/spd_scenes.hpp"
-#include "spd/tissue.hpp"
+#include "spd/tissue_measures.hpp"
 #include "spd/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace softgrain {
+namespace softgrain::spd {
 
 namespace {
-using namespace spd;
-
-// Stress drops (decision spd-tissue-measures): sigma falls by more than `threshold` from a running maximum
-// before it rises by `threshold` above the running minimum; a drop's size is maximum - minimum.
-std::vector<double> stress_drops(const std::vector<double>& sigma, double threshold)
-{
-    std::vector<double> drops;
-    double high = sigma.front(), low = sigma.front();
-    bool falling = false;
-    for (double s : sigma) {
-        if (!falling) {
-            high = std::max(high, s);
-            if (s < high - threshold) falling = true, low = s;
-        } else {
-            low = std::min(low, s);
-            if (s > low + threshold) {
-                drops.push_back(high - low);
-                falling = false;
-                high = s;
-            }
-        }
-    }
-    if (falling) drops.push_back(high - low);
-    return drops;
-}
-
-// The stored snapshot closest in strain to `strain`.
-std::size_t nearest_snapshot(const std::vector<TissueSnapshot>& snaps, double strain)
-{
-    std::size_t best = 0;
-    for (std::size_t k = 0; k < snaps.size(); ++k)
-        if (std::abs(snaps[k].strain - strain) < std::abs(snaps[best].strain - strain)) best = k;
-    return best;
-}
-
-// The measures of Fig. 33 on the recorded curve (decision spd-tissue-measures): sigma = F_top/(W s), its
-// peak, the failure strain (first record after the peak below 0.1 sigma_max), the stress drops of more than
-// 0.05 sigma_max and the growth of their size (later half over earlier half).
-struct CurveMeasures
-{
-    std::vector<double> sigma; // [Pa]
-    double sigma_max = 0;
-    std::size_t peak = 0;
-    double strain_at_failure = NAN;
-    std::vector<double> drops; // [sigma_max]
-    double growth = NAN;
-};
-CurveMeasures curve_measures(const std::vector<TissueRecord>& records, double width_depth)
-{
-    CurveMeasures m;
-    for (std::size_t k = 0; k < records.size(); ++k) {
-        m.sigma.push_back(records[k].force_top / width_depth);
-        if (m.sigma.back() > m.sigma_max) m.sigma_max = m.sigma.back(), m.peak = k;
-    }
-    for (std::size_t k = m.peak; k < records.size(); ++k)
-        if (m.sigma[k] < 0.1 * m.sigma_max) {
-            m.strain_at_failure = records[k].strain;
-            break;
-        }
-    std::vector<double> normalised;
-    for (double s : m.sigma)
-        normalised.push_back(s / m.sigma_max);
-    m.drops = stress_drops(normalised, 0.05);
-    if (m.drops.size() >= 2) {
-        const std::size_t half = m.drops.size() / 2;
-        double first = 0, second = 0;
-        for (std::size_t k = 0; k < m.drops.size(); ++k)
-            (k < half ? first : second) += m.drops[k];
-        m.growth =
-            (second / static_cast<double>(m.drops.size() - half)) / (first / static_cast<double>(half));
-    }
-    return m;
-}
 
 // Fig. 30: the links at set-up.
 void write_links(RunContext& context, const Tissue& tissue, double R)
@@ -129,9 +57,8 @@ void write_snapshots(RunContext& context, const PullResult& r, double eps_peak, 
     }
 }
 
-// The crack: the broken links at the end (positions, forces at breaking). Returns the mean height of the
-// broken links above the bottom clamp over H (NaN without any).
-double write_crack(RunContext& context, const Tissue& tissue, double R)
+// The crack: the broken links at the end (positions, forces at breaking).
+void write_crack(RunContext& context, const Tissue& tissue, double R)
 {
     const ShellModel& model = tissue.model;
     const CohesiveLaw& law = model.link_law();
@@ -142,16 +69,12 @@ double write_crack(RunContext& context, const Tissue& tissue, double R)
                                  {"y2_over_R", "1", "vertex b"},
                                  {"fn_over_fn0", "1", "f_n at breaking over |f_n^0| (compression positive)"},
                                  {"ft_over_ft0", "1", "f_t at breaking over f_t^0"}});
-    const double y_bottom = model.vertex(tissue.bottom.front()).y(), H = clamp_height(tissue);
-    double height = 0;
     for (const CohesiveLink& link : model.links())
         if (link.broken) {
             const Vec2 a = model.vertex(link.a), b = model.vertex(link.b);
-            height += (0.5 * (a.y() + b.y()) - y_bottom) / H;
             table.row({a.x() / R, a.y() / R, b.x() / R, b.y() / R, link.f_n / std::abs(law.f_n0),
                        link.f_t / law.f_t0});
         }
-    return height / model.broken_links();
 }
 
 // Fig. 31: the zeta = 0 curve of the library (yield_normal_force) over |f_t| <= 2 f_t^0, with zeta evaluated
@@ -170,41 +93,6 @@ double write_yield_curve(RunContext& context, const CohesiveLaw& law)
         table.row({f_t / law.f_t0, f_n / std::abs(law.f_n0), zeta});
     }
     return zeta_max;
-}
-
-// Fig. 31: one link of the built tissue, loaded through the model's own force evaluation
-// (ShellModel::compute_forces, which tests eq. (39) and breaks the link): both vertices of its cell-j side
-// (b and b' for an opening, b alone for a slip) are first moved by `approach` along -n (closing, f_n > 0),
-// then step by step by `increment` along `direction` (n: opening, t: slip) until the link breaks. Returns the
-// link's f_n, f_t at the break and the distance moved in `direction` (NaN if it never broke in 20000 steps or
-// the model stopped with a numerical failure).
-struct LinkBreak
-{
-    double f_n = NAN, f_t = NAN, moved = NAN;
-};
-LinkBreak break_one_link(ShellModel model, std::size_t index, double approach, bool opening, double increment,
-                         double dt)
-{
-    // Opening moves b and b' (the frame stays); a slip of f_t^0/k_t ~ 0.4 m would carry b' past the end of
-    // the interface into the next cell, so a slip moves b alone, along t into the interface (m moves along
-    // t: the frame stays; the approach turns it by approach/(2 |m' - m|) ~ 1e-2, which the measured f_n, f_t
-    // at the break include).
-    const CohesiveLink link = model.links()[index];
-    const LinkKinematics k = link_kinematics(link, model.vertex(link.a), model.vertex(link.b),
-                                             model.vertex(link.partner_a), model.vertex(link.partner_b));
-    const Vec2 direction = opening ? k.n : k.t;
-    const Vec2 b = model.vertex(link.b) - approach * k.n, pb = model.vertex(link.partner_b);
-    try {
-        for (int step = 0; step <= 20000; ++step) {
-            model.set_vertex(link.b, b + step * increment * direction);
-            if (opening) model.set_vertex(link.partner_b, pb + step * increment * direction);
-            model.compute_forces(dt);
-            const CohesiveLink& now = model.links()[index];
-            if (now.broken) return {now.f_n, now.f_t, step * increment};
-        }
-    } catch (const NumericalError&) { // e.g. the contact law refusing the overlap: reported as no break (NaN)
-    }
-    return {};
 }
 
 // spd.tissue's options: the tissue and the pull.
@@ -287,42 +175,19 @@ OptionBinding<TissueOptions> tissue_binding()
     return b;
 }
 
-void run_tissue(const TissueOptions& options, RunContext& context)
+// ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
+// N-th record), the time since the pull started as time value: the cells with W/W0 (Fig. 32) and the
+// cohesive links as lines with their forces and broken state, and the contacts (broken links become
+// frictional contacts).
+PullObserver tissue_frames(RunContext& context, double W0)
 {
-    const TissueSetup& setup = options.tissue;
-    const PullSetup& pulling = options.pulling;
-    context.record_seed(setup.seed);
-
-    Tissue tissue = build_tissue(setup);
-    const TissueScales sc = tissue_scales(setup);
-    const Tessellation& tess = tissue.tessellation;
-    const double R = setup.radius, s_depth = setup.material.s, W = tess.width;
-    const double sigma_star = sc.F_star / (2 * R * s_depth); // eq. (37)
-
-    write_links(context, tissue, R);
-    // Fig. 31: the measured forces at which one link breaks in pure opening (mode I) and in shear under the
-    // compression f_n = |f_n^0|/2 (the contact law, which acts between linked cells too, holds an overlap of
-    // |f_n^0|/(2 k_n) = 0.48 (r_i + r_j) at the default cohesion; |f_n^0|/k_n would exceed its
-    // 0.95 (r_i + r_j)), against eq. (39); increments of 7e-4 of the threshold per step.
-    const CohesiveLaw& law0 = tissue.model.link_law();
-    const double dt_probe = pulling.dt_factor * tissue.model.critical_time_step();
-    const LinkBreak mode_one =
-        break_one_link(tissue.model, 0, 0.0, true, 7e-4 * std::abs(law0.f_n0) / law0.k_n, dt_probe);
-    const LinkBreak shear = break_one_link(tissue.model, 0, 0.5 * std::abs(law0.f_n0) / law0.k_n, false,
-                                           7e-4 * law0.f_t0 / law0.k_t, dt_probe);
-
-    auto progress = context.progress("spd.tissue");
-    // ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
-    // N-th record), the time since the pull started as time value: the cells with W/W0 (Fig. 32) and the
-    // cohesive links as lines with their forces and broken state, and the contacts (broken links become
-    // frictional contacts).
-    const auto frame = [&](const Tissue& t, double time) {
+    return [&context, W0](const Tissue& tissue, double time) {
         if (!context.vtk() || !context.vtk()->next(20)) return;
-        const ShellModel& model = t.model;
-        vtk::PolyData cells = shell_particles(model, t.cells);
+        const ShellModel& model = tissue.model;
+        vtk::PolyData cells = shell_particles(model, tissue.cells);
         std::vector<double> energy;
-        for (int c : t.cells)
-            energy.push_back(model.elastic_energy(c) / sc.W0);
+        for (int cell : tissue.cells)
+            energy.push_back(model.elastic_energy(cell) / W0);
         cells.cell_scalars("W_over_W0", std::move(energy));
         vtk::PolyData links;
         std::vector<double> normal, tangential, broken;
@@ -338,23 +203,24 @@ void run_tissue(const TissueOptions& options, RunContext& context)
         std::vector<vtk::Part> parts{{"particles", std::move(cells)},
                                      {"links", std::move(links)},
                                      {"contacts", shell_contacts(model)}};
-        const double H = clamp_height(t);
+        const double H = clamp_height(tissue);
         for (auto& part : parts) {
-            part.data.field("strain", std::log(H / t.height0));
-            part.data.field("force_top", top_clamp_force(t));
+            part.data.field("strain", std::log(H / tissue.height0));
+            part.data.field("force_top", top_clamp_force(tissue));
             part.data.field("broken_links", model.broken_links());
         }
         context.vtk()->write(time, parts);
     };
-    const PullResult r = pull(
-        tissue, pulling, [&](double f) { progress.update(f); }, context.checkpoints(), frame);
-    progress.finish();
-    context.count_steps(r.steps);
+}
 
-    const CurveMeasures m = curve_measures(r.records, W * s_depth);
-    if (!(m.sigma_max > 0))
-        throw NumericalError("tissue stress", r.steps, "the top clamp never pulled: sigma_max = 0");
-    auto& curve = context.table(
+// tissue.dat: the stress-strain curve (Fig. 33) with the broken links and the kinetic energy.
+void write_stress_curve(RunContext& context, const TissueSetup& setup, const Tissue& tissue,
+                        const PullResult& result, const CurveMeasures& curve)
+{
+    const TissueScales scales = tissue_scales(setup);
+    const double width_depth = tissue.tessellation.width * setup.material.s;
+    const double sigma_star = scales.F_star / (2 * setup.radius * setup.material.s); // eq. (37)
+    auto& table = context.table(
         "tissue.dat",
         {{"eps_h", "1", "vertical strain ln(H/H0), H between the clamped vertex lines"},
          {"sigma_over_sigmamax", "1", "top-clamp stress F_top/(W s) over its maximum (Fig. 33)"},
@@ -362,69 +228,116 @@ void run_tissue(const TissueOptions& options, RunContext& context)
          {"sigma_bottom_over_sigmamax", "1", "bottom-clamp stress over the top maximum"},
          {"broken_links", "1", "links broken so far"},
          {"kinetic_over_W0", "1", "kinetic energy over W0 = (f_n^0)^2/(2 k_n)"}});
-    for (std::size_t k = 0; k < r.records.size(); ++k) {
-        const TissueRecord& rec = r.records[k];
-        curve.row({rec.strain, m.sigma[k] / m.sigma_max, m.sigma[k] / sigma_star,
-                   rec.force_bottom / (W * s_depth) / m.sigma_max, double(rec.broken),
-                   rec.kinetic_energy / sc.W0});
+    for (std::size_t k = 0; k < result.records.size(); ++k) {
+        const TissueRecord& record = result.records[k];
+        table.row({record.strain, curve.sigma[k] / curve.sigma_max, curve.sigma[k] / sigma_star,
+                   record.force_bottom / width_depth / curve.sigma_max, double(record.broken),
+                   record.kinetic_energy / scales.W0});
     }
-    const double eps_peak = r.records[m.peak].strain;
-    write_snapshots(context, r, eps_peak, R, sc.W0);
-    const double crack_height = write_crack(context, tissue, R);
-    const CohesiveLaw& law = tissue.model.link_law();
-    const double zeta_max = write_yield_curve(context, law);
+}
 
-    const double cell_area = total_cell_area(tess);
+void write_summary(RunContext& context, const TissueSetup& setup, const Tissue& tissue,
+                   const PullResult& result, const CurveMeasures& curve, const LinkStrength& strength,
+                   double zeta_max)
+{
+    const TissueScales scales = tissue_scales(setup);
+    const Tessellation& tessellation = tissue.tessellation;
+    const double R = setup.radius, W = tessellation.width;
+    const double sigma_star = scales.F_star / (2 * R * setup.material.s); // eq. (37)
+    const double box_area = W * tessellation.height;
+    const CohesiveLaw& law = tissue.model.link_law();
     const Cohesion end = cohesion(tissue);
     const int links = static_cast<int>(tissue.model.links().size());
-    auto& s = context.summary();
-    s["yield_curve_zeta_max"] = zeta_max;
+    const double eps_peak = result.records[curve.peak].strain;
+    auto& summary = context.summary();
+    summary["yield_curve_zeta_max"] = zeta_max;
     // Fig. 31, one link broken through the model: f_n at a pure-opening break over f_n^0 (eq. (39): 1), and
     // |f_t| at a shear break in compression over eq. (39)'s threshold f_t^0 sqrt(1 + f_n/|f_n^0|) (1), with
     // the displacements that broke them over those of the law (f_n^0/k_n, sqrt(1.5) f_t^0/k_t).
     // A probe that never broke its link is a failed measurement: NaN, written "nan" (not null).
-    s["mode_one_break_fn_over_fn0"] = mode_one.f_n / law.f_n0;
-    s["mode_one_break_ft_over_ft0"] = mode_one.f_t / law.f_t0;
-    s["mode_one_break_opening_over_law"] = mode_one.moved * law.k_n / std::abs(law.f_n0);
-    s["shear_break_fn_over_abs_fn0"] = shear.f_n / std::abs(law.f_n0);
-    s["shear_break_ft_over_threshold"] =
+    const LinkBreak& mode_one = strength.mode_one;
+    const LinkBreak& shear = strength.shear;
+    summary["mode_one_break_fn_over_fn0"] = mode_one.f_n / law.f_n0;
+    summary["mode_one_break_ft_over_ft0"] = mode_one.f_t / law.f_t0;
+    summary["mode_one_break_opening_over_law"] = mode_one.moved * law.k_n / std::abs(law.f_n0);
+    summary["shear_break_fn_over_abs_fn0"] = shear.f_n / std::abs(law.f_n0);
+    summary["shear_break_ft_over_threshold"] =
         std::abs(shear.f_t) / (law.f_t0 * std::sqrt(1 + shear.f_n / std::abs(law.f_n0)));
-    s["shear_break_slip_over_law"] = shear.moved * law.k_t / (std::sqrt(1.5) * law.f_t0);
-    s["stress_max"] = m.sigma_max / sigma_star;
-    s["strain_at_peak"] = eps_peak;
-    s["strain_at_failure"] = finite_or_null(m.strain_at_failure);
-    s["failure_width_over_peak_strain"] = finite_or_null((m.strain_at_failure - eps_peak) / eps_peak);
-    s["strain_end"] = r.records.back().strain;
-    s["broken_links"] = tissue.model.broken_links();
-    s["links"] = links;
-    s["broken_fraction"] = static_cast<double>(tissue.model.broken_links()) / links;
-    s["broken_links_at_peak"] = r.records[m.peak].broken;
-    s["separated"] = !end.bottom_to_top;
-    s["crack_height_over_H"] = finite_or_null(crack_height);
-    s["cell_groups"] = end.groups;
-    s["cracks_crossing"] = end.bottom_to_top ? 0 : end.groups - 1;
-    s["stress_drops"] = m.drops.size();
-    s["largest_stress_drop"] = m.drops.empty() ? 0.0 : *std::max_element(m.drops.begin(), m.drops.end());
-    s["stress_drop_growth"] = finite_or_null(m.growth);
-    const TissueRecord& at_peak = r.records[m.peak];
-    s["force_mismatch_at_peak"] = std::abs(at_peak.force_top - at_peak.force_bottom) / at_peak.force_top;
-    s["cells"] = tissue.cells.size();
-    s["vertices"] = tissue.model.vertices();
-    s["interfaces"] = tissue.interfaces;
-    s["tessellation_area_error"] = std::abs(tess.voronoi_area - W * tess.height) / (W * tess.height);
-    s["cell_area_error"] = std::abs(cell_area - W * tess.height) / (W * tess.height);
-    s["merged_corners"] = tess.merged_corners;
-    s["W_over_R"] = W / R;
-    s["H0_over_R"] = tissue.height0 / R;
-    s["sigma_star"] = sigma_star;
-    s["W0"] = sc.W0;
-    s["F_star"] = sc.F_star;
-    s["dt"] = r.dt;
-    s["pull_speed_m_per_s"] = r.speed;
+    summary["shear_break_slip_over_law"] = shear.moved * law.k_t / (std::sqrt(1.5) * law.f_t0);
+    summary["stress_max"] = curve.sigma_max / sigma_star;
+    summary["strain_at_peak"] = eps_peak;
+    summary["strain_at_failure"] = finite_or_null(curve.strain_at_failure);
+    summary["failure_width_over_peak_strain"] =
+        finite_or_null((curve.strain_at_failure - eps_peak) / eps_peak);
+    summary["strain_end"] = result.records.back().strain;
+    summary["broken_links"] = tissue.model.broken_links();
+    summary["links"] = links;
+    summary["broken_fraction"] = static_cast<double>(tissue.model.broken_links()) / links;
+    summary["broken_links_at_peak"] = result.records[curve.peak].broken;
+    summary["separated"] = !end.bottom_to_top;
+    summary["crack_height_over_H"] = finite_or_null(crack_height(tissue));
+    summary["cell_groups"] = end.groups;
+    summary["cracks_crossing"] = end.bottom_to_top ? 0 : end.groups - 1;
+    summary["stress_drops"] = curve.drops.size();
+    summary["largest_stress_drop"] =
+        curve.drops.empty() ? 0.0 : *std::max_element(curve.drops.begin(), curve.drops.end());
+    summary["stress_drop_growth"] = finite_or_null(curve.growth);
+    const TissueRecord& at_peak = result.records[curve.peak];
+    summary["force_mismatch_at_peak"] =
+        std::abs(at_peak.force_top - at_peak.force_bottom) / at_peak.force_top;
+    summary["cells"] = tissue.cells.size();
+    summary["vertices"] = tissue.model.vertices();
+    summary["interfaces"] = tissue.interfaces;
+    summary["tessellation_area_error"] = std::abs(tessellation.voronoi_area - box_area) / box_area;
+    summary["cell_area_error"] = std::abs(total_cell_area(tessellation) - box_area) / box_area;
+    summary["merged_corners"] = tessellation.merged_corners;
+    summary["W_over_R"] = W / R;
+    summary["H0_over_R"] = tissue.height0 / R;
+    summary["sigma_star"] = sigma_star;
+    summary["W0"] = scales.W0;
+    summary["F_star"] = scales.F_star;
+    summary["dt"] = result.dt;
+    summary["pull_speed_m_per_s"] = result.speed;
 }
+
+// The pulled tissue's curve, snapshots, crack, the yield curve of its links, and the summary.
+void report_tissue(RunContext& context, const TissueSetup& setup, const Tissue& tissue,
+                   const PullResult& result, const LinkStrength& strength)
+{
+    const CurveMeasures curve = curve_measures(result.records, tissue.tessellation.width * setup.material.s);
+    if (!(curve.sigma_max > 0))
+        throw NumericalError("tissue stress", result.steps, "the top clamp never pulled: sigma_max = 0");
+    write_stress_curve(context, setup, tissue, result, curve);
+    write_snapshots(context, result, result.records[curve.peak].strain, setup.radius,
+                    tissue_scales(setup).W0);
+    write_crack(context, tissue, setup.radius);
+    const double zeta_max = write_yield_curve(context, tissue.model.link_law());
+    write_summary(context, setup, tissue, result, curve, strength, zeta_max);
+}
+
+void run_tissue(const TissueOptions& options, RunContext& context)
+{
+    const TissueSetup& setup = options.tissue;
+    const PullSetup& pulling = options.pulling;
+    context.record_seed(setup.seed);
+
+    Tissue tissue = build_tissue(setup);
+    write_links(context, tissue, setup.radius); // the set-up, before the pull moves and breaks them
+    // Fig. 31: the forces at which the first link breaks, against eq. (39).
+    const LinkStrength strength =
+        measure_link_strength(tissue, pulling.dt_factor * tissue.model.critical_time_step());
+    auto progress = context.progress("spd.tissue");
+    const PullResult result = pull(
+        tissue, pulling, [&](double fraction) { progress.update(fraction); }, context.checkpoints(),
+        tissue_frames(context, tissue_scales(setup).W0));
+    progress.finish();
+    context.count_steps(result.steps);
+    report_tissue(context, setup, tissue, result, strength);
+}
+
 } // namespace
 
-void register_spd_tissue_scenes(SceneRegistry& registry)
+Scene tissue_scene()
 {
     Scene tissue =
         bound_scene("spd.tissue",
@@ -433,15 +346,15 @@ void register_spd_tissue_scenes(SceneRegistry& registry)
                     "(Figs. 30-34)",
                     tissue_binding(), run_tissue);
     tissue.checkpoints = true;
-    registry.add(std::move(tissue)
-                     .needing([](const Parameters& p) {
-                         // A cell of a planar tiling has 6 edges on average (Euler's formula).
-                         return spd::shell_model_memory(double(p.integer("rows")) *
-                                                            double(p.integer("columns")) * 6.0 *
-                                                            double(p.integer("edge_segments")),
-                                                        "vertices (rows x columns x 6 x edge_segments)");
-                     })
-                     .with_vtk());
+    return std::move(tissue)
+        .needing([](const Parameters& parameters) {
+            // A cell of a planar tiling has 6 edges on average (Euler's formula).
+            return shell_model_memory(double(parameters.integer("rows")) *
+                                          double(parameters.integer("columns")) * 6.0 *
+                                          double(parameters.integer("edge_segments")),
+                                      "vertices (rows x columns x 6 x edge_segments)");
+        })
+        .with_vtk();
 }
 
-} // namespace softgrain
+} // namespace softgrain::spd
