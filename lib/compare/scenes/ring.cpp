@@ -8,9 +8,9 @@
 #include "spd/elastica.hpp"
 #include "spd/shell_model.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace softgrain::compare {

@@ -11,8 +11,8 @@
 #include "spd/shell_model.hpp"
 #include "spd/vtk_frames.hpp"
 
-#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace softgrain::spd {
 

@@ -1,6 +1,5 @@
 // spd.ring_compression (Trivino et al., section 4, Figs. 10-25): quasi-static diametral compression of a
 // ring between rigid walls, and optionally its unloading, with the elastica as the reference.
-#include "core/fits.hpp"
 #include "core/output.hpp"
 #include "spd/compression_measures.hpp"
 #include "spd/elastica.hpp"
