@@ -42,19 +42,22 @@ BenchOptions bench_defaults()
 
 OptionBinding<BenchOptions> bench_binding()
 {
-    OptionBinding<BenchOptions> b(bench_defaults());
-    b.integer(path(&BenchOptions::setup, &AssemblySetup::particles), "particles", "1", "number of rings")
+    OptionBinding<BenchOptions> binding(bench_defaults());
+    binding
+        .integer(path(&BenchOptions::setup, &AssemblySetup::particles), "particles", "1", "number of rings")
         .at_least(1);
-    b.integer(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::nodes), "nodes", "1",
-              "vertices per ring")
+    binding
+        .integer(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::nodes), "nodes", "1",
+                 "vertices per ring")
         .at_least(8);
-    b.count(&BenchOptions::steps, "steps", "1", "time steps (the first is not timed)").at_least(2);
-    b.seed(path(&BenchOptions::setup, &AssemblySetup::seed), "seed", "seed of the initial velocities");
-    b.real(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::dt_factor), "dt_factor", "1",
-           "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
-           "(decision spd-vertex-pair-stability)")
+    binding.count(&BenchOptions::steps, "steps", "1", "time steps (the first is not timed)").at_least(2);
+    binding.seed(path(&BenchOptions::setup, &AssemblySetup::seed), "seed", "seed of the initial velocities");
+    binding
+        .real(path(&BenchOptions::setup, &AssemblySetup::ring, &RingSetup::dt_factor), "dt_factor", "1",
+              "time step over dt_c = sqrt(m/k_max); below the vertex-pair limit 0.236 "
+              "(decision spd-vertex-pair-stability)")
         .positive();
-    return b;
+    return binding;
 }
 
 // The timed run: the assembly after the last step, its box lattice, the time step, the launch speed and the

@@ -23,53 +23,63 @@ OptionBinding<CompactionSetup> compaction_binding()
     const auto ring = [](auto... field) {
         return path(&CompactionSetup::assembly, &AssemblySetup::ring, field...);
     };
-    OptionBinding<CompactionSetup> b(compaction_scene_defaults());
-    b.integer(path(&CompactionSetup::assembly, &AssemblySetup::particles), "particles", "1",
-              "number of rings (the paper: 500)")
+    OptionBinding<CompactionSetup> binding(compaction_scene_defaults());
+    binding
+        .integer(path(&CompactionSetup::assembly, &AssemblySetup::particles), "particles", "1",
+                 "number of rings (the paper: 500)")
         .at_least(2);
-    b.integer(ring(&RingSetup::nodes), "nodes", "1", "vertices per ring").at_least(8);
-    b.real(ring(&RingSetup::material, &ShellMaterial::h), "h", "m",
-           "shell thickness (2r = h; mean ring radius R = 1 m)")
+    binding.integer(ring(&RingSetup::nodes), "nodes", "1", "vertices per ring").at_least(8);
+    binding
+        .real(ring(&RingSetup::material, &ShellMaterial::h), "h", "m",
+              "shell thickness (2r = h; mean ring radius R = 1 m)")
         .positive();
-    b.real(path(&CompactionSetup::assembly, &AssemblySetup::radius_spread), "radius_spread", "1",
-           "Delta R/R, standard deviation of the radii")
+    binding
+        .real(path(&CompactionSetup::assembly, &AssemblySetup::radius_spread), "radius_spread", "1",
+              "Delta R/R, standard deviation of the radii")
         .non_negative()
         .below(0.5);
-    b.real(ring(&RingSetup::eta), "eta", "1",
-           "core-to-shell stiffness ratio, eq. (24); inf: incompressible core")
+    binding
+        .real(ring(&RingSetup::eta), "eta", "1",
+              "core-to-shell stiffness ratio, eq. (24); inf: incompressible core")
         .non_negative()
         .infinity_allowed();
-    b.real(ring(&RingSetup::plastic_ratio), "plastic_ratio", "1", "M_b^Y/M*, eq. (32); inf: elastic shells")
+    binding
+        .real(ring(&RingSetup::plastic_ratio), "plastic_ratio", "1",
+              "M_b^Y/M*, eq. (32); inf: elastic shells")
         .positive()
         .infinity_allowed();
-    b.real(&CompactionSetup::wall_speed, "wall_speed", "R omega_2",
-           "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
+    binding
+        .real(&CompactionSetup::wall_speed, "wall_speed", "R omega_2",
+              "top-wall speed over R omega_2 (omega_2: ovalisation frequency of a free ring)")
         .positive();
-    b.real(&CompactionSetup::strain_max, "strain_max", "1", "largest vertical strain ln(H0/H)")
+    binding.real(&CompactionSetup::strain_max, "strain_max", "1", "largest vertical strain ln(H0/H)")
         .positive()
         .below(1.0);
-    b.real(&CompactionSetup::stress_max, "stress_max", "sigma*",
-           "loading also ends when sigma reaches this (incompressible rings jam before eps = ln(V0/V_s))")
+    binding
+        .real(&CompactionSetup::stress_max, "stress_max", "sigma*",
+              "loading also ends when sigma reaches this (incompressible rings jam before eps = ln(V0/V_s))")
         .positive()
         .infinity_allowed();
-    b.real(&CompactionSetup::gravity, "gravity", "EI/R^2", "particle weight during the deposition")
+    binding.real(&CompactionSetup::gravity, "gravity", "EI/R^2", "particle weight during the deposition")
         .positive();
-    b.real(&CompactionSetup::rest_tolerance, "rest_tolerance", "particle weight",
-           "deposition at rest when the largest unbalanced vertex force is below this")
+    binding
+        .real(&CompactionSetup::rest_tolerance, "rest_tolerance", "particle weight",
+              "deposition at rest when the largest unbalanced vertex force is below this")
         .positive();
-    b.real(ring(&RingSetup::dt_factor), "dt_factor", "1",
-           "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
-           "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
+    binding
+        .real(ring(&RingSetup::dt_factor), "dt_factor", "1",
+              "time step over dt_c = sqrt(m/k_max); stable for a vertex-vertex contact below 0.236 "
+              "(decisions spd-compaction-time-step, spd-vertex-pair-stability)")
         .positive();
-    b.seed(path(&CompactionSetup::assembly, &AssemblySetup::seed), "seed",
-           "seed of the radii and of the deposition");
-    b.check([](const CompactionSetup& setup) {
+    binding.seed(path(&CompactionSetup::assembly, &AssemblySetup::seed), "seed",
+                 "seed of the radii and of the deposition");
+    binding.check([](const CompactionSetup& setup) {
         const RingSetup& ring_setup = setup.assembly.ring;
         if (ring_setup.material.h >= 0.5 * ring_setup.radius)
             throw InputError("h = " + std::to_string(ring_setup.material.h) +
                              ": the shell must be thin against the ring; allowed: h < 0.5 R = 0.5 m");
     });
-    return b;
+    return binding;
 }
 
 // compaction.dat: every recorded state of the loading and the unloading.

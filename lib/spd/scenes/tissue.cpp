@@ -30,12 +30,12 @@ void write_links(RunContext& context, const Tissue& tissue, double R)
 
 // Figs. 30, 32, 34: set-up, three states during loading (half the peak strain, the peak, halfway from the
 // peak to the end) and the end of the run, cells coloured by W/W0.
-void write_snapshots(RunContext& context, const PullResult& r, double eps_peak, double R, double W0)
+void write_snapshots(RunContext& context, const PullResult& result, double eps_peak, double R, double W0)
 {
-    const double eps_end = r.records.back().strain;
+    const double eps_end = result.records.back().strain;
     const std::vector<std::size_t> chosen = {
-        0, nearest_snapshot(r.snapshots, 0.5 * eps_peak), nearest_snapshot(r.snapshots, eps_peak),
-        nearest_snapshot(r.snapshots, 0.5 * (eps_peak + eps_end)), r.snapshots.size() - 1};
+        0, nearest_snapshot(result.snapshots, 0.5 * eps_peak), nearest_snapshot(result.snapshots, eps_peak),
+        nearest_snapshot(result.snapshots, 0.5 * (eps_peak + eps_end)), result.snapshots.size() - 1};
     auto& table = context.table(
         "snapshot.dat",
         {{"snapshot", "1",
@@ -47,7 +47,7 @@ void write_snapshots(RunContext& context, const PullResult& r, double eps_peak, 
          {"y_over_R", "1", "vertex position"},
          {"W_over_W0", "1", "elastic energy of the cell (stretch + bending) over W0 = (f_n^0)^2/(2 k_n)"}});
     for (std::size_t n = 0; n < chosen.size(); ++n) {
-        const TissueSnapshot& snap = r.snapshots[chosen[n]];
+        const TissueSnapshot& snap = result.snapshots[chosen[n]];
         for (std::size_t c = 0; c < snap.cells.size(); ++c)
             for (std::size_t k = 0; k <= snap.cells[c].size(); ++k) {
                 const Vec2& x = snap.cells[c][k % snap.cells[c].size()];
@@ -115,64 +115,82 @@ OptionBinding<TissueOptions> tissue_binding()
 {
     const auto cells = [](auto... field) { return path(&TissueOptions::tissue, field...); };
     const auto pull = [](auto field) { return path(&TissueOptions::pulling, field); };
-    OptionBinding<TissueOptions> b(tissue_defaults());
-    b.integer(cells(&TissueSetup::columns), "columns", "1", "cells per row (mean disk radius R = 1 m)")
+    OptionBinding<TissueOptions> binding(tissue_defaults());
+    binding.integer(cells(&TissueSetup::columns), "columns", "1", "cells per row (mean disk radius R = 1 m)")
         .at_least(2);
-    b.integer(cells(&TissueSetup::rows), "rows", "1", "rows of cells").at_least(2);
-    b.real(cells(&TissueSetup::radius_spread), "radius_spread", "1",
-           "Delta R/R of the disks whose radical cells make the tissue")
+    binding.integer(cells(&TissueSetup::rows), "rows", "1", "rows of cells").at_least(2);
+    binding
+        .real(cells(&TissueSetup::radius_spread), "radius_spread", "1",
+              "Delta R/R of the disks whose radical cells make the tissue")
         .non_negative()
         .below(0.25);
-    b.seed(cells(&TissueSetup::seed), "seed", "seed of the disk radii");
-    b.integer(cells(&TissueSetup::edge_segments), "edge_segments", "1", "shell elements per cell edge")
+    binding.seed(cells(&TissueSetup::seed), "seed", "seed of the disk radii");
+    binding.integer(cells(&TissueSetup::edge_segments), "edge_segments", "1", "shell elements per cell edge")
         .at_least(1);
-    b.real(cells(&TissueSetup::vertex_radius), "r", "m",
-           "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "
-           "(link rest distance about 2r, decision spd-tissue-shrink)")
+    binding
+        .real(cells(&TissueSetup::vertex_radius), "r", "m",
+              "Minkowski radius of the sphero-polygons; neighbouring cells touch at rest "
+              "(link rest distance about 2r, decision spd-tissue-shrink)")
         .positive();
-    b.real(cells(&TissueSetup::material, &ShellMaterial::h), "h", "m",
-           "cell wall thickness (k_s, k_b from eqs. (10)-(11))")
+    binding
+        .real(cells(&TissueSetup::material, &ShellMaterial::h), "h", "m",
+              "cell wall thickness (k_s, k_b from eqs. (10)-(11))")
         .positive();
-    b.real(cells(&TissueSetup::eta), "eta", "1", "core-to-shell stiffness ratio, eq. (24)").non_negative();
-    b.real(cells(&TissueSetup::plastic_ratio), "plastic_ratio", "1", "M_b^Y/M*, eq. (32); inf: elastic cells")
+    binding.real(cells(&TissueSetup::eta), "eta", "1", "core-to-shell stiffness ratio, eq. (24)")
+        .non_negative();
+    binding
+        .real(cells(&TissueSetup::plastic_ratio), "plastic_ratio", "1",
+              "M_b^Y/M*, eq. (32); inf: elastic cells")
         .positive()
         .infinity_allowed();
-    b.real(cells(&TissueSetup::link_stiffness), "link_stiffness", "k_s",
-           "k_n of the links over the wall stretch stiffness k_s (decision spd-tissue-parameters)")
+    binding
+        .real(cells(&TissueSetup::link_stiffness), "link_stiffness", "k_s",
+              "k_n of the links over the wall stretch stiffness k_s (decision spd-tissue-parameters)")
         .positive();
-    b.real(cells(&TissueSetup::shear_stiffness_ratio), "shear_stiffness_ratio", "1",
-           "k_t/k_n of the links (the paper's 'k_n = k_t = 0.1 k_n', decision spd-tissue-kt)")
+    binding
+        .real(cells(&TissueSetup::shear_stiffness_ratio), "shear_stiffness_ratio", "1",
+              "k_t/k_n of the links (the paper's 'k_n = k_t = 0.1 k_n', decision spd-tissue-kt)")
         .positive();
-    b.real(cells(&TissueSetup::cohesion), "cohesion", "F*",
-           "|f_n^0|, tensile threshold of eq. (39), over F* = k_b/R")
+    binding
+        .real(cells(&TissueSetup::cohesion), "cohesion", "F*",
+              "|f_n^0|, tensile threshold of eq. (39), over F* = k_b/R")
         .positive();
-    b.real(cells(&TissueSetup::shear_strength_ratio), "shear_strength_ratio", "1",
-           "f_t^0/|f_n^0| of eq. (39)")
+    binding
+        .real(cells(&TissueSetup::shear_strength_ratio), "shear_strength_ratio", "1",
+              "f_t^0/|f_n^0| of eq. (39)")
         .positive();
-    b.real(cells(&TissueSetup::friction), "friction", "1", "mu of the contact that replaces a broken link")
+    binding
+        .real(cells(&TissueSetup::friction), "friction", "1", "mu of the contact that replaces a broken link")
         .non_negative();
-    b.choice(cells(&TissueSetup::sliding_clamps), "clamps", {{"fixed", false}, {"sliding", true}},
-             "cell edges on the bottom and top lines: fixed (glued), or sliding along the "
-             "walls (vertical component imposed only; decision spd-tissue-clamps)");
-    b.real(pull(&PullSetup::pull_rate), "pull_rate", "1/t_c",
-           "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
+    binding.choice(cells(&TissueSetup::sliding_clamps), "clamps", {{"fixed", false}, {"sliding", true}},
+                   "cell edges on the bottom and top lines: fixed (glued), or sliding along the "
+                   "walls (vertical component imposed only; decision spd-tissue-clamps)");
+    binding
+        .real(pull(&PullSetup::pull_rate), "pull_rate", "1/t_c",
+              "top-clamp speed over H0, times t_c = sqrt(m/k_s)")
         .positive();
-    b.real(pull(&PullSetup::strain_max), "strain_max", "1", "largest eps_h = ln(H/H0)").positive().below(2.0);
-    b.real(pull(&PullSetup::stop_fraction), "stop_fraction", "1",
-           "the run stops once no intact path of links joins the clamps and sigma < stop_fraction "
-           "sigma_max (0: run to strain_max)")
+    binding.real(pull(&PullSetup::strain_max), "strain_max", "1", "largest eps_h = ln(H/H0)")
+        .positive()
+        .below(2.0);
+    binding
+        .real(pull(&PullSetup::stop_fraction), "stop_fraction", "1",
+              "the run stops once no intact path of links joins the clamps and sigma < stop_fraction "
+              "sigma_max (0: run to strain_max)")
         .non_negative()
         .below(1.0);
-    b.real(pull(&PullSetup::damping), "damping", "2 sqrt(m k_s)", "global viscous damping on free vertices")
+    binding
+        .real(pull(&PullSetup::damping), "damping", "2 sqrt(m k_s)",
+              "global viscous damping on free vertices")
         .non_negative();
-    b.real(pull(&PullSetup::dt_factor), "dt_factor", "1", "time step over dt_c = sqrt(m/k_max)").positive();
-    b.check([](const TissueOptions& options) {
+    binding.real(pull(&PullSetup::dt_factor), "dt_factor", "1", "time step over dt_c = sqrt(m/k_max)")
+        .positive();
+    binding.check([](const TissueOptions& options) {
         const TissueSetup& setup = options.tissue;
         if (setup.material.h >= 0.5 * setup.radius)
             throw InputError("h = " + std::to_string(setup.material.h) +
                              ": the cell wall must be thin against the cell; allowed: h < 0.5 R = 0.5 m");
     });
-    return b;
+    return binding;
 }
 
 // ParaView frames at every 20th record (100 frames of the 2000 records by default; --vtk-every N: every
