@@ -117,6 +117,11 @@ void measure_late_force_growth(const CompressionResult& result, CompressionMeasu
 
 } // namespace
 
+bool elastica_applies(const RingSetup& setup)
+{
+    return setup.eta == 0 && !std::isfinite(setup.plastic_ratio);
+}
+
 double slope_error_bound(const std::vector<double>& x, double delta)
 {
     if (x.size() < 2) return NAN;
@@ -180,8 +185,7 @@ CompressionMeasures measure_compression(const RingSetup& setup, const Compressio
     if (measures.final.strain >= 0.25 - 1e-9)
         measures.contact_length_eps025 = loading_state_nearest(result.states, 0.25).contact_length;
     measure_loading_curve(setup, scales, result, measures);
-    if (setup.eta == 0 && !std::isfinite(setup.plastic_ratio))
-        measures.elastica = elastica_deviations(setup, scales, result);
+    if (elastica_applies(setup)) measures.elastica = elastica_deviations(setup, scales, result);
     measure_late_force_growth(result, measures);
     const CompressionState& last = measures.final;
     if (last.contact_vertices > 0)

@@ -34,6 +34,9 @@ struct ProfileShape
 };
 ProfileShape profile_shape(const CompressionState& state, double l0);
 
+// Whether the inextensible elastica is the reference of the ring: no core (eta = 0) and elastic.
+bool elastica_applies(const RingSetup& setup);
+
 // The loading curve against the inextensible elastica at the same strains (eta = 0, elastic rings only).
 struct ElasticaDeviations
 {

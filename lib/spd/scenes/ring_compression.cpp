@@ -56,12 +56,6 @@ bool is_elastic(const RingSetup& setup)
     return !std::isfinite(setup.plastic_ratio);
 }
 
-// The elastica is the reference of the eta = 0, elastic ring.
-bool has_elastica(const RingSetup& setup)
-{
-    return setup.eta == 0 && is_elastic(setup);
-}
-
 // W_s/W_b, NaN for an undeformed ring (both energies vanish).
 double stretch_over_bending(const CompressionState& state)
 {
@@ -73,7 +67,7 @@ void write_compression_table(const RingSetup& setup, const CompressionResult& re
 {
     const RingScales scales = ring_scales(setup);
     const double F_star = scales.characteristic.F_star, R = setup.radius;
-    const bool plastic = !is_elastic(setup), elastica = has_elastica(setup);
+    const bool plastic = !is_elastic(setup), elastica = elastica_applies(setup);
     auto& table = context.table(
         "compression.dat",
         {{"eps", "1", "1 - b/b0"},
