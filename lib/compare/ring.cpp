@@ -20,65 +20,67 @@ constexpr double pi = std::numbers::pi;
 
 // The SPD ring of the same material: eta = 0, elastic, out-of-plane length 1 m (it enters neither the
 // elastic ring's laws nor its observables).
-spd::RingSetup spd_setup(const RingComparisonSetup& c)
+spd::RingSetup spd_setup(const RingComparisonSetup& comparison)
 {
-    spd::RingSetup s;
-    s.nodes = c.nodes;
-    s.radius = c.radius;
-    s.material = {c.E, c.nu, c.h, 1.0, INFINITY};
-    s.eta = 0;
-    s.plastic_ratio = INFINITY;
-    s.dt_factor = c.dt_factor;
-    return s;
+    spd::RingSetup ring;
+    ring.nodes = comparison.nodes;
+    ring.radius = comparison.radius;
+    ring.material = {comparison.E, comparison.nu, comparison.h, 1.0, INFINITY};
+    ring.eta = 0;
+    ring.plastic_ratio = INFINITY;
+    ring.dt_factor = comparison.dt_factor;
+    return ring;
 }
 
 // The observables of a recorded SPD state; B the bending rigidity.
-RingObservation spd_observation(const RingComparisonSetup& c, double B, const spd::CompressionState& st)
+RingObservation spd_observation(const RingComparisonSetup& comparison, double B,
+                                const spd::CompressionState& state)
 {
     // profile_x spans the top-wall contact from its leftmost to its rightmost touching vertex.
-    const auto [lo, hi] = std::minmax_element(st.profile_x.begin(), st.profile_x.end());
-    const double contact = st.profile_x.empty() ? 0.0 : *hi - *lo;
-    return {st.strain, st.wall_force * c.radius * c.radius / B, st.width, st.volume,
-            contact / (2 * c.radius)};
+    const auto [lo, hi] = std::minmax_element(state.profile_x.begin(), state.profile_x.end());
+    const double contact = state.profile_x.empty() ? 0.0 : *hi - *lo;
+    return {state.strain, state.wall_force * comparison.radius * comparison.radius / B, state.width,
+            state.volume, contact / (2 * comparison.radius)};
 }
 
-RingComparison compress_spd(const RingComparisonSetup& c, const std::function<void(double)>& progress,
-                            const RingFrameObserver& frame)
+RingComparison compress_spd(const RingComparisonSetup& comparison,
+                            const std::function<void(double)>& progress, const RingFrameObserver& frame)
 {
-    const spd::RingSetup setup = spd_setup(c);
-    const spd::RingScales sc = spd::ring_scales(setup);
-    const double B = sc.flexural_rigidity;
+    const spd::RingSetup setup = spd_setup(comparison);
+    const spd::RingScales scales = spd::ring_scales(setup);
+    const double B = scales.flexural_rigidity;
     spd::CompressionObserver observe;
     if (frame)
-        observe = [&](const spd::RingBetweenWalls& w, const spd::CompressionState& st) {
-            frame(spd_observation(c, B, st),
-                  spd::shell_frame(w.model, {w.ring}, {w.bottom_wall, w.top_wall}));
+        observe = [&](const spd::RingBetweenWalls& walls, const spd::CompressionState& state) {
+            frame(spd_observation(comparison, B, state),
+                  spd::shell_frame(walls.model, {walls.ring}, {walls.bottom_wall, walls.top_wall}));
         };
-    const spd::CompressionResult r = spd::ring_compression(setup, c.strain_max, c.strain_step, false,
-                                                           c.relax_tolerance, progress, observe);
+    const spd::CompressionResult result =
+        spd::ring_compression(setup, comparison.strain_max, comparison.strain_step, false,
+                              comparison.relax_tolerance, progress, observe);
     RingComparison out;
     out.bending_rigidity = B;
-    out.steps = r.steps;
-    out.dt = r.dt;
-    out.dt_critical = r.dt_critical;
+    out.steps = result.steps;
+    out.dt = result.dt;
+    out.dt_critical = result.dt_critical;
     out.dt_stable = spd::ring_between_walls(setup).model.stable_time_step();
-    for (const spd::CompressionState& st : r.states)
-        out.states.push_back(spd_observation(c, B, st));
+    for (const spd::CompressionState& state : result.states)
+        out.states.push_back(spd_observation(comparison, B, state));
     return out;
 }
 
-RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<void(double)>& progress,
-                            const RingFrameObserver& frame)
+RingComparison compress_dpm(const RingComparisonSetup& comparison,
+                            const std::function<void(double)>& progress, const RingFrameObserver& frame)
 {
     // The same constants as the SPD ring (decision compare-ring-mapping).
-    const spd::RingScales sc = spd::ring_scales(spd_setup(c));
-    const int n = c.nodes;
-    const double R = c.radius, b0 = 2 * R, sigma = c.h;
+    const spd::RingScales scales = spd::ring_scales(spd_setup(comparison));
+    const int n = comparison.nodes;
+    const double R = comparison.radius, b0 = 2 * R, sigma = comparison.h;
     const Eigen::Matrix2Xd polygon = dpm::regular_polygon(n, R, Eigen::Vector2d::Zero(), 0.0);
     dpm::ShapeParameters shape;
-    shape.kl = sc.laws.k_s;
-    shape.l0 = sc.l0;
-    shape.kb = sc.laws.k_b;
+    shape.kl = scales.laws.k_s;
+    shape.l0 = scales.l0;
+    shape.kb = scales.laws.k_b;
     shape.theta0 = 2 * pi / n;
     shape.a0 = 0.5 * n * R * R * std::sin(2 * pi / n); // unused: k_a = 0 (no enclosed fluid, as eta = 0)
     dpm::DpmSystem system;
@@ -91,24 +93,24 @@ RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<vo
     // zig-zag bending mode): the eigenvalue of a sum is at most the sum of the largest ones.
     const double lambda_max = 4 * shape.kl + 16 * shape.kb / (shape.l0 * shape.l0);
     RingComparison out;
-    out.bending_rigidity = sc.flexural_rigidity;
+    out.bending_rigidity = scales.flexural_rigidity;
     out.dt = out.dt_critical = out.dt_stable = NAN;
     const double force_scale = out.bending_rigidity / (R * R);
 
     dpm::PlateSchedule schedule;
-    schedule.kp = sc.laws.k_s; // decision compare-ring-plates: the SPD wall contact k_n = k_s
+    schedule.kp = scales.laws.k_s; // decision compare-ring-plates: the SPD wall contact k_n = k_s
     // The rms force bound that implies a largest force component below relax_tolerance B/R^2, as in SPD.
-    schedule.force_tolerance = c.relax_tolerance * force_scale / std::sqrt(2.0 * n);
+    schedule.force_tolerance = comparison.relax_tolerance * force_scale / std::sqrt(2.0 * n);
     // A velocity below the one the tolerance force gives in one largest FIRE step, dt_max = 0.5/sqrt(lambda).
     const double dt_max = 0.5 / std::sqrt(std::max(schedule.kp, lambda_max));
     schedule.kinetic_tolerance = 0.5 * std::pow(schedule.force_tolerance * dt_max, 2);
     // The driver lifts the ring onto the bottom plate (lowest vertex at sigma/2) and starts the top plate
     // at the highest vertex + sigma/2: D = 2R + sigma, and the mid-line gap is b = b0 - delta.
     const double D = polygon.row(1).maxCoeff() - polygon.row(1).minCoeff() + sigma;
-    const int increments = static_cast<int>(std::lround(c.strain_max / c.strain_step));
+    const int increments = static_cast<int>(std::lround(comparison.strain_max / comparison.strain_step));
     schedule.compressions.push_back(0.0);
     for (int k = 1; k <= increments; ++k)
-        schedule.compressions.push_back(c.strain_max * k / increments * b0 / D);
+        schedule.compressions.push_back(comparison.strain_max * k / increments * b0 / D);
     const double A0 = dpm::particle_area(x, 0, n);
     const auto observe = [&](const Eigen::VectorXd& y, double top, const dpm::CompressionSample& sample) {
         const auto points = y.reshaped(2, n);
@@ -131,21 +133,15 @@ RingComparison compress_dpm(const RingComparisonSetup& c, const std::function<vo
     };
     try {
         out.steps = dpm::compress_between_plates<2>(x, body, sigma, lambda_max, schedule, observe).iterations;
-    } catch (const NumericalError& e) {
-        throw NumericalError(e.quantity + " at strain " + std::to_string(c.strain_step * (e.step)), e.step,
-                             "FIRE did not reach relax_tolerance; raise relax_tolerance or check the inputs");
+    } catch (const NumericalError& error) {
+        throw NumericalError(
+            error.quantity + " at strain " + std::to_string(comparison.strain_step * (error.step)),
+            error.step, "FIRE did not reach relax_tolerance; raise relax_tolerance or check the inputs");
     }
     return out;
 }
 
 } // namespace
-
-RingMethod ring_method_from_name(const std::string& name)
-{
-    if (name == "spd") return RingMethod::spd;
-    if (name == "dpm") return RingMethod::dpm;
-    throw InputError("model = '" + name + "': allowed spd | dpm");
-}
 
 RingComparison compress_ring(const RingComparisonSetup& setup, const std::function<void(double)>& progress,
                              const RingFrameObserver& frame)
@@ -165,11 +161,32 @@ RingComparison compress_ring(const RingComparisonSetup& setup, const std::functi
                                            : compress_dpm(setup, progress, frame);
 }
 
-RingErrors elastica_errors(const RingObservation& o)
+RingErrors elastica_errors(const RingObservation& observation)
 {
-    const spd::ElasticaState el = spd::elastica_ring_between_plates(o.strain);
-    return {std::abs(o.force / el.force - 1), std::abs(o.width / el.width - 1),
-            std::abs(o.volume - el.volume), std::abs(o.contact_length - el.contact_length)};
+    const spd::ElasticaState elastica = spd::elastica_ring_between_plates(observation.strain);
+    return {std::abs(observation.force / elastica.force - 1),
+            std::abs(observation.width / elastica.width - 1), std::abs(observation.volume - elastica.volume),
+            std::abs(observation.contact_length - elastica.contact_length)};
+}
+
+bool reported_strain(double strain)
+{
+    const double tenths = 10 * strain;
+    return strain > 0 && std::abs(tenths - std::round(tenths)) <= 1e-6;
+}
+
+std::optional<RingErrors> largest_elastica_errors(const RingComparison& comparison)
+{
+    std::optional<RingErrors> worst;
+    for (const RingObservation& state : comparison.states) {
+        if (!reported_strain(state.strain)) continue;
+        const RingErrors errors = elastica_errors(state);
+        const RingErrors so_far = worst.value_or(RingErrors{});
+        worst = RingErrors{std::max(so_far.force, errors.force), std::max(so_far.width, errors.width),
+                           std::max(so_far.volume, errors.volume),
+                           std::max(so_far.contact_length, errors.contact_length)};
+    }
+    return worst;
 }
 
 } // namespace softgrain::compare

@@ -20,13 +20,12 @@
 #include "core/vtk.hpp"
 
 #include <functional>
-#include <string>
+#include <optional>
 #include <vector>
 
 namespace softgrain::compare {
 
 enum class RingMethod { spd, dpm };
-RingMethod ring_method_from_name(const std::string& name); // "spd" | "dpm"
 
 struct RingComparisonSetup
 {
@@ -76,5 +75,12 @@ struct RingErrors
     double force = 0, width = 0, volume = 0, contact_length = 0;
 };
 RingErrors elastica_errors(const RingObservation& observation);
+
+// Whether a strain is one of those the observables are reported at: eps = 0.1, 0.2, ...
+bool reported_strain(double strain);
+
+// The largest deviations from the elastica over the states at the reported strains; absent without such a
+// state (strain_max < 0.1).
+std::optional<RingErrors> largest_elastica_errors(const RingComparison& comparison);
 
 } // namespace softgrain::compare

@@ -367,6 +367,66 @@ void transfer(Archive& archive, CompactionResult& result)
     archive(result.steps);
 }
 
+double top_stress_over_sigma_star(const CompactionSetup& setup, const CompactionResult& result,
+                                  const CompactionState& state)
+{
+    const RingSetup& ring = setup.assembly.ring;
+    return state.force_top / (result.width * ring.material.s) / ring_scales(ring).characteristic.sigma_star;
+}
+
+double bottom_stress_over_sigma_star(const CompactionSetup& setup, const CompactionResult& result,
+                                     const CompactionState& state)
+{
+    const RingSetup& ring = setup.assembly.ring;
+    return state.force_bottom / (result.width * ring.material.s) /
+           ring_scales(ring).characteristic.sigma_star;
+}
+
+double void_ratio(const CompactionResult& result, const CompactionState& state)
+{
+    return (result.width * state.height - state.solid_area) / state.solid_area;
+}
+
+double solid_volume_share(const CompactionResult& result, const CompactionState& state)
+{
+    return state.height < result.height0
+               ? (result.solid_area0 - state.solid_area) / (result.width * (result.height0 - state.height))
+               : NAN;
+}
+
+CompactionMeasures measure_compaction(const CompactionSetup& setup, const CompactionResult& result)
+{
+    CompactionMeasures measures;
+    double force_max = 0;
+    for (const CompactionState& state : result.states) {
+        if (state.loading) {
+            measures.end_of_loading = state;
+            measures.stress_max =
+                std::max(measures.stress_max, top_stress_over_sigma_star(setup, result, state));
+            const double share = solid_volume_share(result, state);
+            if (std::isfinite(share) && state.strain >= 0.05)
+                measures.volume_share_peak = std::max(measures.volume_share_peak, share);
+            measures.wall_force_mismatch =
+                std::max(measures.wall_force_mismatch, std::abs(state.force_top - state.force_bottom));
+            force_max = std::max(force_max, state.force_top);
+        } else if (std::isnan(measures.residual_strain) && state.force_top <= 0) {
+            measures.residual_strain = state.strain;
+        }
+    }
+    measures.wall_force_mismatch /= force_max;
+    std::vector<double> log_stress, void_ratios;
+    for (const CompactionState& state : result.states) {
+        const double stress = top_stress_over_sigma_star(setup, result, state);
+        if (state.loading && stress >= 0.01 * measures.stress_max) {
+            log_stress.push_back(std::log10(stress));
+            void_ratios.push_back(void_ratio(result, state));
+        }
+    }
+    measures.compressibility = fit_line(log_stress, void_ratios);
+    measures.compressibility_points = log_stress.size();
+    return measures;
+}
+
 CompactionSetup compaction_scene_defaults()
 {
     CompactionSetup setup;

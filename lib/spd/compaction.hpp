@@ -18,9 +18,11 @@
 // (ShellModel::elastic_energy).
 #pragma once
 
+#include "core/fits.hpp"
 #include "spd/assembly.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace softgrain {
@@ -119,6 +121,31 @@ struct CompactionResult
 CompactionResult compaction(const CompactionSetup& setup,
                             const std::function<void(const Assembly&, const CompactionState&)>& observe,
                             const std::function<void(double)>& progress, Checkpoints* checkpoints = nullptr);
+
+// The measures above on a recorded state: sigma/sigma* (eq. (37)) on the top wall or the bottom wall, the void
+// ratio e, and Delta V_s/Delta V (NaN at H >= H0, where Delta V = 0).
+double top_stress_over_sigma_star(const CompactionSetup& setup, const CompactionResult& result,
+                                  const CompactionState& state);
+double bottom_stress_over_sigma_star(const CompactionSetup& setup, const CompactionResult& result,
+                                     const CompactionState& state);
+double void_ratio(const CompactionResult& result, const CompactionState& state);
+double solid_volume_share(const CompactionResult& result, const CompactionState& state);
+
+// What Figs. 27-28 read off the loading and unloading curves.
+struct CompactionMeasures
+{
+    CompactionState end_of_loading; // the last loading state (eps = strain_max or sigma = stress_max)
+    double stress_max = 0;          // largest sigma/sigma* of the loading
+    double volume_share_peak = 0;   // largest Delta V_s/Delta V of the loading from eps = 0.05
+    double residual_strain = NAN;   // eps where the top wall leaves the sample on unloading (NaN: never)
+    // Quasi-static check: largest |F_top - F_bottom| over the loading, relative to the largest F_top.
+    double wall_force_mismatch = 0;
+    // Eq. (38), e = e0 - C log10(sigma/sigma*), fitted over the loading states within the last two decades
+    // of stress (slope -C, intercept e0; absent below two states).
+    std::optional<Line> compressibility;
+    std::size_t compressibility_points = 0;
+};
+CompactionMeasures measure_compaction(const CompactionSetup& setup, const CompactionResult& result);
 
 // Write or read the protocol's records for a checkpoint (core/checkpoint.hpp).
 void transfer(Archive& archive, DiskPacking& packing);

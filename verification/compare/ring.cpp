@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 using namespace softgrain::compare;
@@ -87,6 +88,30 @@ TEST_CASE("same bending rigidity: small-strain stiffness F R^2/(B eps) equals th
         // Second-order discretisation: relative error O((l0/R)^2) = 9.6e-3 at N = 64.
         CHECK_CLOSE(o.force / eps, elastica / eps, (Tolerance{l0 * l0, 0}));
     }
+}
+
+TEST_CASE("compare.ring's largest errors are taken over eps = 0.1, 0.2, ... only")
+{
+    // Observations at eps = 0.05, 0.1, 0.15, 0.2 whose forces are off the elastica by 50%, 2%, 40%, 30%: the
+    // maximum over the reported strains is 30%; the larger errors at eps = 0.05 and 0.15 are not reported.
+    const double strains[] = {0.05, 0.1, 0.15, 0.2}, force_errors[] = {0.5, 0.02, 0.4, 0.3};
+    RingComparison comparison;
+    comparison.states.push_back({}); // eps = 0
+    for (int k = 0; k < 4; ++k) {
+        const softgrain::spd::ElasticaState elastica =
+            softgrain::spd::elastica_ring_between_plates(strains[k]);
+        comparison.states.push_back({strains[k], elastica.force * (1 + force_errors[k]), elastica.width,
+                                     elastica.volume, elastica.contact_length});
+    }
+    const std::optional<RingErrors> worst = largest_elastica_errors(comparison);
+    REQUIRE(worst.has_value());
+    CHECK_CLOSE(worst->force, 0.3, (Tolerance{1e-12, 0})); // round-off of F (1 + e)/F - 1
+    CHECK(worst->width == 0.0);
+    CHECK(reported_strain(0.1 + 0.2) == true); // 0.30000000000000004: a tenth up to round-off
+    CHECK(reported_strain(0.0) == false);
+    // Below eps = 0.1 nothing is reported.
+    comparison.states.resize(2);
+    CHECK(!largest_elastica_errors(comparison).has_value());
 }
 
 TEST_CASE("compare.ring: refused inputs (exit 2) and a time step above the stability limit (exit 3)")
