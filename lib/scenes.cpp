@@ -2,7 +2,7 @@
 #include "compare/scenes/scenes.hpp"
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
-#include "dpm/dpm_scenes.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "sd/sd_scenes.hpp"
 #include "spd/scenes/scenes.hpp"
 #include "vsm/vsm_scenes.hpp"

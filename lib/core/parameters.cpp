@@ -26,9 +26,12 @@ std::string join(const std::vector<std::string>& words, const std::string& separ
     return joined;
 }
 
-[[noreturn]] void refuse(const ParameterSpec& spec, const std::string& shown_value, const std::string& why)
+// Refuses the value the user gave as `key`: the parameter's name, or an old name of it (named with the new).
+[[noreturn]] void refuse(const ParameterSpec& spec, const std::string& key, const std::string& shown_value,
+                         const std::string& why)
 {
-    throw InputError("parameter '" + spec.name + "' = '" + shown_value + "' " + why +
+    const std::string named = key == spec.name ? "'" + key + "'" : "'" + key + "' (now '" + spec.name + "')";
+    throw InputError("parameter " + named + " = '" + shown_value + "' " + why +
                      "; allowed: " + spec.allowed());
 }
 
@@ -238,25 +241,27 @@ const ParameterSpec& Parameters::spec(const std::string& name) const
     throw InputError("unknown parameter '" + name + "'; allowed: " + join(names, ", "));
 }
 
-void Parameters::assign(const ParameterSpec& spec, ParameterValue value, const std::string& shown_value)
+void Parameters::assign(const ParameterSpec& spec, const std::string& key, ParameterValue value,
+                        const std::string& shown_value)
 {
     if (spec.type == ParameterType::choice) {
         const auto& word = std::get<std::string>(value);
         bool known = false;
         for (const auto& allowed : spec.choices)
             known = known || allowed == word;
-        if (!known) refuse(spec, shown_value, "is not a known choice");
+        if (!known) refuse(spec, key, shown_value, "is not a known choice");
     } else if (spec.type == ParameterType::real && std::holds_alternative<std::string>(value)) {
         if (!is_keyword(spec, std::get<std::string>(value)))
-            refuse(spec, shown_value, "is not a real number");
+            refuse(spec, key, shown_value, "is not a real number");
     } else if (spec.type != ParameterType::boolean) {
         const double x = spec.type == ParameterType::real ? std::get<double>(value)
                                                           : static_cast<double>(std::get<long long>(value));
-        if (std::isnan(x)) refuse(spec, shown_value, "is not a number"); // e.g. `dt = nan` in a TOML file
+        if (std::isnan(x))
+            refuse(spec, key, shown_value, "is not a number"); // e.g. `dt = nan` in a TOML file
         const bool infinite_ok = std::isinf(x) && x > 0 && spec.accepts_infinity;
         const bool below_min = spec.min_inclusive ? x < spec.min : x <= spec.min;
         const bool above_max = spec.max_inclusive ? x > spec.max : x >= spec.max;
-        if (!infinite_ok && (below_min || above_max)) refuse(spec, shown_value, "is out of range");
+        if (!infinite_ok && (below_min || above_max)) refuse(spec, key, shown_value, "is out of range");
     }
     values_[spec.name] = std::move(value);
 }
@@ -267,26 +272,26 @@ void Parameters::set_from_text(const std::string& key, const std::string& text)
     switch (s.type) {
     case ParameterType::real: {
         if (is_keyword(s, text)) {
-            assign(s, text, text);
+            assign(s, key, text, text);
             return;
         }
         auto x = parse_real(text, s.accepts_infinity);
-        if (!x) refuse(s, text, "is not a real number");
-        assign(s, *x, text);
+        if (!x) refuse(s, key, text, "is not a real number");
+        assign(s, key, *x, text);
         return;
     }
     case ParameterType::integer: {
         auto n = parse_integer(text);
-        if (!n) refuse(s, text, "is not an integer");
-        assign(s, *n, text);
+        if (!n) refuse(s, key, text, "is not an integer");
+        assign(s, key, *n, text);
         return;
     }
     case ParameterType::boolean:
-        if (text != "true" && text != "false") refuse(s, text, "is not a boolean");
-        assign(s, text == "true", text);
+        if (text != "true" && text != "false") refuse(s, key, text, "is not a boolean");
+        assign(s, key, text == "true", text);
         return;
     case ParameterType::choice:
-        assign(s, text, text);
+        assign(s, key, text, text);
         return;
     }
 }
@@ -315,7 +320,7 @@ void Parameters::set_from_toml(const toml::table& table, const std::string& orig
             switch (s->type) {
             case ParameterType::real: {
                 if (node.is_string() && is_keyword(*s, *node.value<std::string>())) {
-                    assign(*s, *node.value<std::string>(), shown.str());
+                    assign(*s, key, *node.value<std::string>(), shown.str());
                     break;
                 }
                 std::optional<double> x;
@@ -324,21 +329,21 @@ void Parameters::set_from_toml(const toml::table& table, const std::string& orig
                 else if (node.is_string())
                     x = parse_real(*node.value<std::string>(), s->accepts_infinity);
                 if (!x) wrong_type();
-                if (std::isinf(*x) && !s->accepts_infinity) refuse(*s, shown.str(), "is not finite");
-                assign(*s, *x, shown.str());
+                if (std::isinf(*x) && !s->accepts_infinity) refuse(*s, key, shown.str(), "is not finite");
+                assign(*s, key, *x, shown.str());
                 break;
             }
             case ParameterType::integer:
                 if (!node.is_integer()) wrong_type();
-                assign(*s, *node.value<long long>(), shown.str());
+                assign(*s, key, *node.value<long long>(), shown.str());
                 break;
             case ParameterType::boolean:
                 if (!node.is_boolean()) wrong_type();
-                assign(*s, *node.value<bool>(), shown.str());
+                assign(*s, key, *node.value<bool>(), shown.str());
                 break;
             case ParameterType::choice:
                 if (!node.is_string()) wrong_type();
-                assign(*s, *node.value<std::string>(), shown.str());
+                assign(*s, key, *node.value<std::string>(), shown.str());
                 break;
             }
         } catch (const InputError& e) {

@@ -97,7 +97,9 @@ class Parameters
 
   private:
     const ParameterSpec& spec(const std::string& name) const;
-    void assign(const ParameterSpec& spec, ParameterValue value, const std::string& shown_value);
+    // Checks `value` against `spec` and stores it; messages name `key`, the name the user typed.
+    void assign(const ParameterSpec& spec, const std::string& key, ParameterValue value,
+                const std::string& shown_value);
     const ParameterValue& value(const std::string& name, ParameterType expected) const;
 
     std::vector<ParameterSpec> specs_;

@@ -154,4 +154,35 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
     return out;
 }
 
+int count_distinct_packings(const std::map<int, std::vector<double>>& thetas)
+{
+    int distinct = 0;
+    for (const auto& [contacts, list] : thetas) {
+        std::vector<double> angles;
+        bool without_cycle = false;
+        for (double t : list) {
+            if (std::isnan(t))
+                without_cycle = true;
+            else
+                angles.push_back(t);
+        }
+        distinct += without_cycle;
+        std::sort(angles.begin(), angles.end());
+        for (std::size_t k = 0; k < angles.size(); ++k)
+            distinct += k == 0 || angles[k] - angles[k - 1] > 1.0;
+    }
+    return distinct;
+}
+
+double largest_gap_over_range(std::vector<double> angles)
+{
+    std::erase_if(angles, [](double t) { return std::isnan(t); });
+    if (angles.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(angles.begin(), angles.end());
+    double gap = 0;
+    for (std::size_t k = 1; k < angles.size(); ++k)
+        gap = std::max(gap, angles[k] - angles[k - 1]);
+    return gap / (angles.back() - angles.front());
+}
+
 } // namespace softgrain::dpm

@@ -14,6 +14,8 @@
 #include "dpm/system.hpp"
 
 #include <cstdint>
+#include <map>
+#include <vector>
 
 namespace softgrain::dpm {
 
@@ -44,5 +46,15 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& options);
 // inscribed in an ellipse of that minor semi-axis whose shape parameter is A0 (zero shape energy at the
 // start). Refuses (InputError) A0 < A_min and a ring whose edges would exceed the vertex diameter.
 Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& options);
+
+// Distinct packings (decision dpm-boundary-jam) among jammed packings given as theta [deg] by contact number
+// (NaN: no 4-cycle): same contact number and theta within 1 degree of a neighbour in the sorted list
+// (single linkage); packings without a 4-cycle count once per contact number.
+int count_distinct_packings(const std::map<int, std::vector<double>>& thetas);
+
+// Fig. 9.18(f) measure of the continuity of theta(A0): the largest gap between consecutive sorted thetas
+// (NaN ignored) over their range; NaN below two values. Five values (the floppy boundary's packings) give at
+// least 1/4; a continuous curve tends to 0.
+double largest_gap_over_range(std::vector<double> thetas);
 
 } // namespace softgrain::dpm

@@ -9,7 +9,7 @@
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/compress3d.hpp"
-#include "dpm/compress_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "dpm/shape_energy3d.hpp"
 #include "dpm/spring_network.hpp"
 #include "dpm/vtk_frames.hpp"

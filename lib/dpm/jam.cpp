@@ -1,6 +1,7 @@
 #include "dpm/jam.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/rng.hpp"
 #include "dpm/jam_schedule.hpp"
 #include "dpm/modes.hpp"
@@ -171,6 +172,21 @@ JamResult jam(const JamOptions& o)
         for (auto t = targets.rbegin() + 1; t != targets.rend(); ++t)
             reach(*t, false);
     return out;
+}
+
+CompressionBranchFit fit_compression_branch(const std::vector<JamState>& states)
+{
+    if (states.empty()) return {};
+    const double phi_c = states.front().phi;
+    std::vector<double> dphi, pressure;
+    for (std::size_t k = 1; k < states.size(); ++k) {
+        if (states[k].decompression) continue;
+        dphi.push_back(states[k].phi - phi_c);
+        pressure.push_back(states[k].pressure);
+    }
+    const bool fitted = dphi.size() >= 2;
+    return {fitted ? fit_slope_through_origin(dphi, pressure) : std::nullopt,
+            fit_power_law_exponent(dphi, pressure)};
 }
 
 } // namespace softgrain::dpm

@@ -14,6 +14,7 @@
 #include "dpm/system.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,15 @@ struct JamResult
 };
 
 JamResult jam(const JamOptions& options);
+
+// The compression branch of a jam() run (the states after onset, without those of the decompression): the
+// bulk modulus B of P = B (phi - phi_c) fitted through the origin and the exponent of P against
+// phi - phi_c, both from two states on (core/fits.hpp; nothing below).
+struct CompressionBranchFit
+{
+    std::optional<double> bulk_modulus, pressure_exponent;
+};
+CompressionBranchFit fit_compression_branch(const std::vector<JamState>& states);
 
 // Packing fraction: disks sum pi sigma^2/4 / A; deformable particles eq. (9.22).
 double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x);

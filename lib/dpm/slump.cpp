@@ -1,6 +1,7 @@
 #include "dpm/slump.hpp"
 
 #include "core/errors.hpp"
+#include "core/fits.hpp"
 #include "core/rng.hpp"
 #include "dpm/modes.hpp"
 
@@ -212,6 +213,22 @@ std::vector<double> surface_profile(const Eigen::VectorXd& x, double bin)
         if (!(top[k] >= height)) top[k] = height;
     }
     return top;
+}
+
+SurfaceFit fit_free_surface(const Eigen::VectorXd& x, double diameter)
+{
+    SurfaceFit fit;
+    const std::vector<double> top = surface_profile(x, diameter);
+    for (std::size_t k = 0; k < top.size(); ++k)
+        if (!std::isnan(top[k])) {
+            fit.centre.push_back(k + 0.5);
+            fit.height.push_back(top[k] / diameter);
+        }
+    if (const auto line = fit_line(fit.centre, fit.height)) {
+        fit.intercept = line->intercept;
+        fit.slope = line->slope;
+    }
+    return fit;
 }
 
 double pile_front(const Eigen::VectorXd& x)

@@ -109,6 +109,15 @@ SlumpResult run_slump(const SlumpOptions& options, const SlumpObserver& observe 
 
 // Free surface: topmost vertex height (+ sigma/2) in bins of width `bin` from x = 0; NaN for empty bins.
 std::vector<double> surface_profile(const Eigen::VectorXd& x, double bin);
+// The free surface in units of D: the heights of the occupied bins of width D (surface_profile over D) at
+// their centres, and the least-squares line through them (0, 0 below two bins); its slope gives the angle
+// of repose.
+struct SurfaceFit
+{
+    std::vector<double> centre, height; // occupied bins [D]
+    double intercept = 0, slope = 0;    // height = intercept + slope centre
+};
+SurfaceFit fit_free_surface(const Eigen::VectorXd& x, double diameter);
 // Right edge of the pile: largest vertex x + sigma/2.
 double pile_front(const Eigen::VectorXd& x);
 // Particles cut by the vertical line at `at` (number of layers there).

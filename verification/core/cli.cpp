@@ -402,3 +402,66 @@ TEST_CASE(
     CHECK(summary["no_flat_contact"].is_null());
     fs::remove_all(dir);
 }
+
+TEST_CASE("a renamed parameter keeps its old name: dpm.jam's A0_floppy runs as A0 with identical results, "
+          "describe marks it deprecated, and a refused value is named by the key typed")
+{
+    const Outcome describe = run_softgrain("describe dpm.jam");
+    REQUIRE(describe.exit_code == 0);
+    CHECK(contains(describe.output, "\nA0 "));
+    CHECK(contains(describe.output, "deprecated name: A0_floppy"));
+
+    // 12 floppy particles of 6 and 8 vertices (A_min(6) = 1.103) jammed at P_t = 1e-5, one target above.
+    const std::string floppy =
+        " --quiet --set model=floppy --set particles=12 --set nodes_small=6 --set "
+        "nodes_large=8 --set pressure_onset=1e-5 --set pressures=1 --set pressure_max=2e-5";
+    const fs::path dir = scratch_directory("renamed");
+    const auto run = [&](const std::string& target, const std::string& settings, const std::string& name) {
+        const fs::path out = dir / name;
+        REQUIRE(run_softgrain("run " + target + floppy + settings + " --out " + out.string()).exit_code == 0);
+        return out / (target.ends_with(".toml") ? fs::path(target).stem().string() : target);
+    };
+    // pressure.dat without its `# scene:` line (a scene file's run is named after the file).
+    const auto table = [](const fs::path& run_dir) {
+        std::ifstream file(run_dir / "pressure.dat");
+        std::string text, line;
+        while (std::getline(file, line))
+            if (line.rfind("# scene:", 0) != 0) text += line + "\n";
+        return text;
+    };
+    const auto summary = [](const fs::path& run_dir) {
+        auto json = nlohmann::json::parse(std::ifstream(run_dir / "summary.json"));
+        for (const char* measured : {"wall_time_s", "time_per_step_s", "peak_memory_mib", "scene"})
+            json.erase(measured);
+        return json;
+    };
+    const fs::path by_name = run("dpm.jam", " --set A0=1.12", "new");
+    const fs::path by_old_name = run("dpm.jam", " --set A0_floppy=1.12", "old");
+    write_file(dir / "floppy.toml", "scene = \"dpm.jam\"\nA0_floppy = 1.12\n");
+    const fs::path by_file = run((dir / "floppy.toml").string(), "", "file");
+    // The value is stored and reported under the new name, and every result is the same (deterministic).
+    CHECK(summary(by_old_name)["parameters"]["A0"] == 1.12);
+    CHECK(!summary(by_old_name)["parameters"].contains("A0_floppy"));
+    CHECK(summary(by_old_name) == summary(by_name));
+    CHECK(summary(by_file) == summary(by_name));
+    CHECK(table(by_old_name) == table(by_name));
+    CHECK(table(by_file) == table(by_name));
+    // ... and it reaches the run: another A0 jams to another packing.
+    const fs::path other = run("dpm.jam", " --set A0_floppy=1.2", "other");
+    CHECK(summary(other)["phi_c"] != summary(by_name)["phi_c"]);
+
+    // Out of the spec's range: the message names the key as typed (and the new name of an old one).
+    const Outcome old_below = run_softgrain("run dpm.jam --set A0_floppy=0.9 --out " + dir.string());
+    CHECK(old_below.exit_code == 2);
+    CHECK(contains(old_below.output, "parameter 'A0_floppy' (now 'A0') = '0.9' is out of range"));
+    const Outcome below = run_softgrain("run dpm.jam --set A0=0.9 --out " + dir.string());
+    CHECK(below.exit_code == 2);
+    CHECK(contains(below.output, "parameter 'A0' = '0.9' is out of range"));
+    // Below A_min(6) of the small floppy particles: the protocol's one check of A0 against the polygons.
+    const Outcome below_polygon =
+        run_softgrain("run dpm.jam" + floppy + " --set A0=1.05 --out " + dir.string());
+    CHECK(below_polygon.exit_code == 2);
+    CHECK(contains(below_polygon.output, "A0 = 1.05"));
+    CHECK(contains(below_polygon.output, "A_min(6)"));
+    fs::remove_all(dir);
+}

@@ -7,7 +7,7 @@
 #include "core/output.hpp"
 #include "core/scene.hpp"
 #include "dpm/jam.hpp"
-#include "dpm/jam_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "support/tolerance.hpp"
 
 #include <filesystem>
@@ -19,6 +19,14 @@ using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
 namespace {
+
+// The options of the dpm.jam protocol that a run of dpm.bench with parameters `p` times.
+dpm::JamOptions jam_protocol_options(const Parameters& p)
+{
+    OptionBinding<dpm::JamOptions> binding;
+    dpm::bind_jam_protocol(binding, [](dpm::JamOptions& options) -> dpm::JamOptions& { return options; });
+    return binding.read(p);
+}
 
 // Runs dpm.bench with `settings` and returns its summary.json and parameters.
 std::pair<nlohmann::json, Parameters>
@@ -87,7 +95,7 @@ TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm
 {
     const auto [summary, p] = run_bench(six_shells());
     check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
-    const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
+    const dpm::JamResult direct = dpm::jam(jam_protocol_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
     CHECK(summary["force_evaluations"].get<long>() == direct.force_evaluations);
     // FIRE alone (the default relaxation): no Newton finisher.
@@ -101,7 +109,7 @@ TEST_CASE("dpm.bench in 2D with relaxation = fire_newton: the finisher's counts 
 {
     const auto [summary, p] = run_bench(six_shells({{"relaxation", "fire_newton"}}));
     check_cost_keys(summary, 2, 6 * (6 + 8) / 2);
-    const dpm::JamResult direct = dpm::jam(dpm::jam_options(p));
+    const dpm::JamResult direct = dpm::jam(jam_protocol_options(p));
     CHECK(summary["fire_iterations"].get<long>() == direct.fire_iterations);
     CHECK(summary["newton_handovers"].get<long>() == direct.handovers);
     CHECK(summary["newton_steps"].get<long>() == direct.newton_steps);

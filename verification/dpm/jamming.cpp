@@ -73,3 +73,41 @@ TEST_CASE(
         CHECK(std::abs(r.states[2].phi - r.states[0].phi) < 1e-7);
     }
 }
+
+TEST_CASE("fit_compression_branch: B and the exponent of an exact power law over the compression branch "
+          "only, the onset and the decompression states left out [DPM Fig. 9.13(a)]")
+{
+    // P = 0.3 (phi - phi_c)^1.5 at three states above phi_c = 0.8; the onset (P_t) and a decompression
+    // state off the law must not enter either fit.
+    const auto state = [](double phi, double pressure, bool decompression) {
+        JamState jammed;
+        jammed.phi = phi;
+        jammed.pressure = pressure;
+        jammed.box = Eigen::Vector2d::Zero(); // unused here: set so that copies read no uninitialised memory
+        jammed.decompression = decompression;
+        return jammed;
+    };
+    const double phi_c = 0.8;
+    const std::vector<double> dphi{1e-3, 2e-3, 4e-3};
+    std::vector<JamState> states{state(phi_c, 1e-7, false)};
+    double xy = 0, xx = 0; // the slope through the origin, sum(x y)/sum(x^2), computed here independently
+    for (const double x : dphi) {
+        const double pressure = 0.3 * std::pow(x, 1.5);
+        states.push_back(state(phi_c + x, pressure, false));
+        xy += x * pressure;
+        xx += x * x;
+    }
+    states.push_back(state(phi_c + 1e-3, 1.0, true));
+    const CompressionBranchFit fit = fit_compression_branch(states);
+    // Exact data, but phi is stored as phi_c + x: x comes back as (phi_c + x) - phi_c, off by up to
+    // round-off x phi_c ~ 1e-16 absolute, 1e-13 relative at x = 1e-3, which moves B and the log-log slope
+    // (spacing ln 2) by about as much; 1e-11 is 100 times that.
+    REQUIRE(fit.pressure_exponent.has_value());
+    CHECK_CLOSE(*fit.pressure_exponent, 1.5, (Tolerance{1e-11, 0}));
+    REQUIRE(fit.bulk_modulus.has_value());
+    CHECK_CLOSE(*fit.bulk_modulus, xy / xx, (Tolerance{1e-11, 0}));
+    // One compressed state: no fit of either (two states at least).
+    const CompressionBranchFit single = fit_compression_branch({states[0], states[1], states[4]});
+    CHECK_FALSE(single.bulk_modulus.has_value());
+    CHECK_FALSE(single.pressure_exponent.has_value());
+}

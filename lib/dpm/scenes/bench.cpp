@@ -2,7 +2,7 @@
 //
 // dimension = 2: the dpm.jam protocol (jam.hpp) with dpm.jam's parameters. dimension = 3: the 3D protocol
 // (jam3d.hpp) with the same parameters mapped onto it: model, particles, seed, pressure_onset,
-// pressure_max and pressures (in k_v v0), A0_floppy (as A0^3D) as they are; both particle sizes on one mesh
+// pressure_max and pressures (in k_v v0), A0 (as A0^3D) as they are; both particle sizes on one mesh
 // whose vertex count nodes_small = nodes_large names it (mesh_for_nodes); rough contacts as in 2D; the rest
 // (stiffnesses, FIRE budget, saddle escapes, size ratio 1.4) at the protocol's defaults; kl_surface has no
 // 3D counterpart. Reported (summary.json): jam_seconds (the whole protocol, wall time) and jam_cpu_seconds
@@ -13,13 +13,12 @@
 // newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp; 0 with FIRE
 // alone and in 3D), spectrum_seconds, degrees_of_freedom; the run's peak memory is peak_memory_mib. Costs are measured, never asserted (verification/dpm/bench.cpp checks
 // that the keys agree with each other).
-#include "dpm/bench_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
 #include "dpm/jam3d.hpp"
-#include "dpm/jam_scene.hpp"
 #include "dpm/modes.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -30,6 +29,13 @@
 namespace softgrain::dpm {
 
 namespace {
+
+// dpm.bench's options: the dpm.jam protocol, timed in 2D or mapped onto the 3D protocol.
+struct BenchOptions
+{
+    JamOptions jam;
+    int dimension = 2;
+};
 
 // What a jamming run cost, in either dimension.
 struct JamCost
@@ -44,37 +50,57 @@ struct JamCost
 const std::array<const char*, 6> meshes3d{"tetrahedron", "octahedron",  "icosahedron",
                                           "geodesic42",  "geodesic162", "geodesic642"};
 
-std::string mesh_for_nodes(const JamOptions& o)
+std::string mesh_for_nodes(const JamOptions& options)
 {
     std::string allowed;
     for (const char* name : meshes3d) {
         const int count = mesh_from_name(name).vertex_count();
-        if (o.nodes_small == count && o.nodes_large == count) return name;
+        if (options.nodes_small == count && options.nodes_large == count) return name;
         allowed += (allowed.empty() ? "" : ", ") + std::to_string(count) + " (" + name + ")";
     }
-    throw InputError("nodes_small = " + std::to_string(o.nodes_small) +
-                     " and nodes_large = " + std::to_string(o.nodes_large) +
+    throw InputError("nodes_small = " + std::to_string(options.nodes_small) +
+                     " and nodes_large = " + std::to_string(options.nodes_large) +
                      " with dimension = 3: both particle sizes use one mesh; allowed equal vertex counts " +
                      allowed);
 }
 
-Jam3dOptions jam3d_options(const JamOptions& o)
+// The 3D protocol's options for dpm.jam's (see the header comment).
+Jam3dOptions jam_options_3d(const JamOptions& options)
 {
-    if (o.model == "smooth_disk" || o.model == "rough_disk")
-        throw InputError("model = '" + o.model +
+    if (options.model == "smooth_disk" || options.model == "rough_disk")
+        throw InputError("model = '" + options.model +
                          "' with dimension = 3: allowed shell | floppy | surface_tension");
-    Jam3dOptions o3;
-    o3.model = shape_model_from_name(o.model);
-    o3.particles = o.particles;
-    o3.mesh = mesh_for_nodes(o);
-    o3.size_ratio = o.size_ratio;
-    o3.pressure_onset = o.pressure_onset;
-    o3.pressure_max = o.pressure_max;
-    o3.pressures = o.pressures;
-    o3.A0_floppy = o.A0_floppy;
-    o3.seed = o.seed;
-    o3.interaction = InteractionKind::rough;
-    return o3;
+    Jam3dOptions options3d;
+    options3d.model = shape_model_from_name(options.model);
+    options3d.particles = options.particles;
+    options3d.mesh = mesh_for_nodes(options);
+    options3d.size_ratio = options.size_ratio;
+    options3d.pressure_onset = options.pressure_onset;
+    options3d.pressure_max = options.pressure_max;
+    options3d.pressures = options.pressures;
+    options3d.A0_floppy = options.A0_floppy;
+    options3d.seed = options.seed;
+    options3d.interaction = InteractionKind::rough;
+    return options3d;
+}
+
+OptionBinding<BenchOptions> bench_binding()
+{
+    OptionBinding<BenchOptions> binding;
+    bind_jam_protocol(binding, &BenchOptions::jam);
+    binding
+        .integer(
+            &BenchOptions::dimension, "dimension", "1",
+            "2: the dpm.jam protocol; 3: the 3D protocol of dpm.modes3d (jam3d.hpp), nodes_small = "
+            "nodes_large = its mesh's vertices (4, 6, 12, 42, 162, 642), pressures in k_v v0, kl_surface "
+            "unused")
+        .at_least(2)
+        .at_most(3);
+    // In 3D the model and the vertex counts must name 3D particles: refused before anything runs.
+    binding.check([](const BenchOptions& options) {
+        if (options.dimension == 3) jam_options_3d(options.jam);
+    });
+    return binding;
 }
 
 // The spectrum of the jammed packing (eq. 9.28) as the scenes take it today: every eigenvalue and
@@ -119,55 +145,42 @@ JamCost measure(const Jam& jam_packing)
     return cost;
 }
 
-} // namespace
-
-void run_bench(const Parameters& p, RunContext& context)
+void run_bench(const BenchOptions& options, RunContext& context)
 {
-    const JamOptions o = jam_options(p);
-    const int dimension = static_cast<int>(p.integer("dimension"));
-    context.record_seed(o.seed);
+    const JamOptions& jam_options = options.jam;
+    const int dimension = options.dimension;
+    context.record_seed(jam_options.seed);
     JamCost cost;
     if (dimension == 2) {
-        cost = measure([&o] { return jam(o); });
+        cost = measure([&jam_options] { return jam(jam_options); });
         cost.vertices = cost.degrees_of_freedom / 2;
     } else {
-        const Jam3dOptions o3 = jam3d_options(o);
-        cost = measure([&o3] { return jam3d(o3); });
+        const Jam3dOptions jam3d_options = jam_options_3d(jam_options);
+        cost = measure([&jam3d_options] { return jam3d(jam3d_options); });
         cost.vertices = cost.degrees_of_freedom / 3;
     }
     context.count_steps(cost.fire_iterations);
-    auto& s = context.summary();
-    s["dimension"] = dimension;
-    s["degrees_of_freedom"] = cost.degrees_of_freedom;
-    s["vertices"] = cost.vertices;
-    s["jam_seconds"] = cost.jam_seconds;
-    s["jam_cpu_seconds"] = cost.jam_cpu_seconds;
-    s["relax_seconds"] = cost.relax_seconds;
-    s["fire_seconds"] = cost.fire_seconds;
-    s["fire_iterations"] = cost.fire_iterations;
-    s["force_evaluations"] = cost.force_evaluations;
-    s["force_evaluations_per_second"] = static_cast<double>(cost.force_evaluations) / cost.fire_seconds;
-    s["vertex_force_evaluations_per_second"] =
+    auto& summary = context.summary();
+    summary["dimension"] = dimension;
+    summary["degrees_of_freedom"] = cost.degrees_of_freedom;
+    summary["vertices"] = cost.vertices;
+    summary["jam_seconds"] = cost.jam_seconds;
+    summary["jam_cpu_seconds"] = cost.jam_cpu_seconds;
+    summary["relax_seconds"] = cost.relax_seconds;
+    summary["fire_seconds"] = cost.fire_seconds;
+    summary["fire_iterations"] = cost.fire_iterations;
+    summary["force_evaluations"] = cost.force_evaluations;
+    summary["force_evaluations_per_second"] = static_cast<double>(cost.force_evaluations) / cost.fire_seconds;
+    summary["vertex_force_evaluations_per_second"] =
         static_cast<double>(cost.vertices) * static_cast<double>(cost.force_evaluations) / cost.fire_seconds;
-    s["newton_handovers"] = cost.newton_handovers;
-    s["newton_steps"] = cost.newton_steps;
-    s["newton_factorizations"] = cost.newton_factorizations;
-    s["spectrum_seconds"] = cost.spectrum_seconds;
-    s["spectrum_modes"] = cost.modes;
+    summary["newton_handovers"] = cost.newton_handovers;
+    summary["newton_steps"] = cost.newton_steps;
+    summary["newton_factorizations"] = cost.newton_factorizations;
+    summary["spectrum_seconds"] = cost.spectrum_seconds;
+    summary["spectrum_modes"] = cost.modes;
 }
 
-std::vector<ParameterSpec> bench_parameters()
-{
-    std::vector<ParameterSpec> specs = jam_parameters();
-    specs.push_back(ParameterSpec::integer("dimension", 2, "1",
-                                           "2: the dpm.jam protocol; 3: the 3D protocol of dpm.modes3d "
-                                           "(jam3d.hpp), nodes_small = nodes_large = its mesh's vertices "
-                                           "(4, 6, 12, 42, 162, 642), pressures in k_v v0, kl_surface unused")
-                        .at_least(2)
-                        .at_most(3));
-    return specs;
-}
-
+// The dense spectrum of the jammed packing: two n x n matrices, n = dimension x vertices.
 MemoryEstimate bench_memory(const Parameters& p)
 {
     const double particles = static_cast<double>(p.integer("particles"));
@@ -177,6 +190,20 @@ MemoryEstimate bench_memory(const Parameters& p)
     return dense_matrix_memory(dimension * particles * (disks ? 1.0 : nodes), 2,
                                disks ? "dimension x particles"
                                      : "dimension x particles x (nodes_small + nodes_large) / 2");
+}
+
+} // namespace
+
+Scene bench_scene()
+{
+    return bound_scene("dpm.bench",
+                       "Issue 19: the cost of jamming one packing with the dpm.jam protocol (2D) or the 3D "
+                       "protocol, and of its dense spectrum: time, FIRE iterations, force evaluations per "
+                       "second (make bench)",
+                       bench_binding(), run_bench)
+        .needing(bench_memory)
+        .without_vtk("a timed scene: writing frames would change the time it measures; "
+                     "dpm.jam and dpm.modes3d draw the packings it times");
 }
 
 } // namespace softgrain::dpm

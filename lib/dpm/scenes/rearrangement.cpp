@@ -1,7 +1,7 @@
 // dpm.rearrangement: the first irreversible change of the contact network of a compressed smooth-disk
 // packing (Fig. 9.13(e, f)); both packings with their contacts, the pressure jump and how many particles
 // the change involves.
-#include "dpm/rearrangement_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 
 #include "core/output.hpp"
 #include "dpm/rearrangement.hpp"
@@ -13,14 +13,47 @@ namespace softgrain::dpm {
 
 namespace {
 
+// dpm.rearrangement's defaults: a larger packing of smooth disks than dpm.jam's, from a higher onset.
+RearrangementOptions rearrangement_defaults()
+{
+    RearrangementOptions defaults;
+    defaults.jam.model = "smooth_disk";
+    defaults.jam.particles = 64;
+    defaults.jam.pressure_onset = 1e-6;
+    return defaults;
+}
+
+OptionBinding<RearrangementOptions> rearrangement_binding()
+{
+    const auto jam = [](auto field) { return path(&RearrangementOptions::jam, field); };
+    OptionBinding<RearrangementOptions> binding(rearrangement_defaults());
+    binding
+        .integer(jam(&JamOptions::particles), "particles", "1",
+                 "smooth disks N, half small (sigma = 1), half large (1.4)")
+        .at_least(2);
+    binding.seed(jam(&JamOptions::seed), "seed", "seed of the random initial placement");
+    binding
+        .real(jam(&JamOptions::pressure_onset), "pressure_onset", "k_c",
+              "P_t: jamming onset pressure the search starts at")
+        .positive();
+    binding
+        .real(&RearrangementOptions::dphi, "dphi", "1", "compression step Delta phi (Fig. 9.13e, f: ~1e-5)")
+        .positive();
+    binding
+        .integer(&RearrangementOptions::max_steps, "max_steps", "1",
+                 "compression steps searched before giving up")
+        .at_least(1);
+    return binding;
+}
+
 // Disk centres wrapped into the box, for drawing.
-void write_disks(Table& table, const DpmSystem& s, const PackingState& state, int which,
+void write_disks(Table& table, const DpmSystem& system, const PackingState& state, int which,
                  const NetworkChange& change)
 {
-    for (std::size_t m = 0; m < s.particles.size(); ++m) {
+    for (std::size_t m = 0; m < system.particles.size(); ++m) {
         const Eigen::Vector2d w = wrap_into_box(state.x.segment<2>(2 * m), state.box);
-        table.row(
-            {double(which), double(m), w.x(), w.y(), s.particles[m].sigma, change.changed[m] ? 1.0 : 0.0});
+        table.row({double(which), double(m), w.x(), w.y(), system.particles[m].sigma,
+                   change.changed[m] ? 1.0 : 0.0});
     }
 }
 
@@ -65,53 +98,46 @@ RearrangementObserver frame_writer(vtk::Series& series)
     };
 }
 
-} // namespace
-
-void run_rearrangement(const Parameters& p, RunContext& context)
+void run_rearrangement(const RearrangementOptions& options, RunContext& context)
 {
-    RearrangementOptions o;
-    o.jam.model = "smooth_disk";
-    o.jam.particles = static_cast<int>(p.integer("particles"));
-    o.jam.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    o.jam.pressure_onset = p.real("pressure_onset");
-    o.dphi = p.real("dphi");
-    o.max_steps = static_cast<int>(p.integer("max_steps"));
-    context.record_seed(o.jam.seed);
-    const RearrangementResult r =
-        context.vtk() ? find_rearrangement(o, frame_writer(*context.vtk())) : find_rearrangement(o);
-    context.count_steps(r.fire_iterations);
-    auto& s = context.summary();
-    s["phi_c"] = r.phi_c;
-    s["contact_overlap_threshold"] = r.min_overlap;
-    s["found"] = r.found;
-    s["elastic_network_changes"] = r.elastic_changes;
-    if (!r.found) {
+    context.record_seed(options.jam.seed);
+    const RearrangementResult result = context.vtk()
+                                           ? find_rearrangement(options, frame_writer(*context.vtk()))
+                                           : find_rearrangement(options);
+    context.count_steps(result.fire_iterations);
+    auto& summary = context.summary();
+    summary["phi_c"] = result.phi_c;
+    summary["contact_overlap_threshold"] = result.min_overlap;
+    summary["found"] = result.found;
+    summary["elastic_network_changes"] = result.elastic_changes;
+    if (!result.found) {
         for (const char* key :
              {"step", "phi_before", "phi_after", "pressure_previous", "pressure_before", "pressure_after",
               "pressure_reversed", "pressure_jump_over_elastic", "contacts_before", "contacts_after",
               "contacts_broken", "contacts_formed", "particles_changed", "fraction_particles_changed"})
-            s[key] = nullptr;
+            summary[key] = nullptr;
         return;
     }
-    const int n = static_cast<int>(r.system.particles.size());
-    const NetworkChange change = compare_networks(r.before.contacts, r.after.contacts, n);
-    s["step"] = r.step;
-    s["phi_before"] = r.before.phi;
-    s["phi_after"] = r.after.phi;
-    s["pressure_previous"] = r.previous.pressure;
-    s["pressure_before"] = r.before.pressure;
-    s["pressure_after"] = r.after.pressure;
-    s["pressure_reversed"] = r.reversed.pressure;
+    const int particles = static_cast<int>(result.system.particles.size());
+    const NetworkChange change = compare_networks(result.before.contacts, result.after.contacts, particles);
+    summary["step"] = result.step;
+    summary["phi_before"] = result.before.phi;
+    summary["phi_after"] = result.after.phi;
+    summary["pressure_previous"] = result.previous.pressure;
+    summary["pressure_before"] = result.before.pressure;
+    summary["pressure_after"] = result.after.pressure;
+    summary["pressure_reversed"] = result.reversed.pressure;
     // 1 on an elastic branch (P linear in phi over two steps), away from 1 at a discontinuity of P(phi).
-    s["pressure_jump_over_elastic"] = (r.after.pressure - r.before.pressure) /
-                                      (r.before.pressure - r.previous.pressure) *
-                                      (r.before.phi - r.previous.phi) / (r.after.phi - r.before.phi);
-    s["contacts_before"] = r.before.contacts.size();
-    s["contacts_after"] = r.after.contacts.size();
-    s["contacts_broken"] = change.only_before.size();
-    s["contacts_formed"] = change.only_after.size();
-    s["particles_changed"] = change.particles_changed;
-    s["fraction_particles_changed"] = double(change.particles_changed) / n;
+    summary["pressure_jump_over_elastic"] = (result.after.pressure - result.before.pressure) /
+                                            (result.before.pressure - result.previous.pressure) *
+                                            (result.before.phi - result.previous.phi) /
+                                            (result.after.phi - result.before.phi);
+    summary["contacts_before"] = result.before.contacts.size();
+    summary["contacts_after"] = result.after.contacts.size();
+    summary["contacts_broken"] = change.only_before.size();
+    summary["contacts_formed"] = change.only_after.size();
+    summary["particles_changed"] = change.particles_changed;
+    summary["fraction_particles_changed"] = double(change.particles_changed) / particles;
 
     auto& disks = context.table("disks.dat", {{"state", "1", "0 before, 1 after the step"},
                                               {"particle", "1", "index"},
@@ -119,8 +145,8 @@ void run_rearrangement(const Parameters& p, RunContext& context)
                                               {"y", "sigma_small", "centre wrapped into the box"},
                                               {"diameter", "sigma_small", "disk diameter"},
                                               {"changed", "1", "1 if one of its contacts broke or formed"}});
-    write_disks(disks, r.system, r.before, 0, change);
-    write_disks(disks, r.system, r.after, 1, change);
+    write_disks(disks, result.system, result.before, 0, change);
+    write_disks(disks, result.system, result.after, 1, change);
     auto& contacts = context.table(
         "contacts.dat", {{"state", "1", "0 before, 1 after the step"},
                          {"i", "1", "particle"},
@@ -130,28 +156,26 @@ void run_rearrangement(const Parameters& p, RunContext& context)
                          {"dx", "sigma_small", "minimum image r_j - r_i"},
                          {"dy", "sigma_small", "minimum image r_j - r_i"},
                          {"kind", "1", "0 in both networks, 1 only before (broken), 2 only after (formed)"}});
-    write_contacts(contacts, r.before, 0, r.after.contacts, 1);
-    write_contacts(contacts, r.after, 1, r.before.contacts, 2);
+    write_contacts(contacts, result.before, 0, result.after.contacts, 1);
+    write_contacts(contacts, result.after, 1, result.before.contacts, 2);
     auto& box = context.table("box.dat", {{"state", "1", "0 before, 1 after"},
                                           {"L", "sigma_small", "side of the periodic square box"}});
-    box.row({0.0, r.before.box.x()});
-    box.row({1.0, r.after.box.x()});
+    box.row({0.0, result.before.box.x()});
+    box.row({1.0, result.after.box.x()});
 }
 
-std::vector<ParameterSpec> rearrangement_parameters()
+} // namespace
+
+Scene rearrangement_scene()
 {
-    return {
-        ParameterSpec::integer("particles", 64, "1",
-                               "smooth disks N, half small (sigma = 1), half large (1.4)")
-            .at_least(2),
-        ParameterSpec::seed("seed", 1, "seed of the random initial placement"),
-        ParameterSpec::real("pressure_onset", 1e-6, "k_c", "P_t: jamming onset pressure the search starts at")
-            .positive(),
-        ParameterSpec::real("dphi", 1e-5, "1", "compression step Delta phi (Fig. 9.13e, f: ~1e-5)")
-            .positive(),
-        ParameterSpec::integer("max_steps", 2000, "1", "compression steps searched before giving up")
-            .at_least(1),
-    };
+    return bound_scene("dpm.rearrangement",
+                       "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
+                       "smooth-disk packing compressed from onset in steps Delta phi; both networks",
+                       rearrangement_binding(), run_rearrangement)
+        .needing([](const Parameters& p) {
+            return dpm_vertex_memory(static_cast<double>(p.integer("particles")), "disks (particles)");
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm

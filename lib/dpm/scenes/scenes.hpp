@@ -1,0 +1,100 @@
+// The scenes of the deformable particle model (MacKeith, Wang, Shattuck, O'Hern): dpm.*, one file each in
+// lib/dpm/scenes/ named after the scene, registered by register_dpm_scenes in the order `softgrain list`
+// shows them.
+#pragma once
+
+#include "core/option_binding.hpp"
+#include "core/resources.hpp"
+#include "core/scene.hpp"
+#include "dpm/jam.hpp"
+
+#include <cstddef>
+
+namespace softgrain {
+
+void register_dpm_scenes(SceneRegistry& registry);
+
+} // namespace softgrain
+
+namespace softgrain::dpm {
+
+Scene modes_scene();
+Scene shear_friction_scene();
+Scene packing_fraction_scene();
+Scene crystal_modes_scene();
+Scene jam_scene();
+Scene bench_scene();
+Scene rearrangement_scene();
+Scene compress2d_scene();
+Scene compress3d_scene();
+Scene compress_box_scene();
+Scene boundary_jam_scene();
+Scene shape3d_scene();
+Scene modes3d_scene();
+Scene shear_modulus_scene();
+Scene shear_modulus3d_scene();
+Scene slump_scene();
+Scene slide3d_scene();
+
+} // namespace softgrain::dpm
+
+// What several scenes share.
+namespace softgrain::dpm {
+
+// The compression scenes report a force-displacement exponent from three samples on: two fit any power law
+// exactly, so they would report a number that nothing checks.
+constexpr std::size_t minimum_exponent_points = 3;
+
+// The parameters of the jamming protocol (jam.hpp) as dpm.jam declares them, bound to the JamOptions that
+// `jam` (a field of Options) holds: dpm.jam's own, the protocol dpm.bench times and the one dpm.shear_modulus
+// shears. The floppy particles' A0 >= A_min(N) of both sizes is checked by the protocol itself (jam()).
+template <class Options, class JamField>
+void bind_jam_protocol(OptionBinding<Options>& binding, JamField jam)
+{
+    const auto field = [jam](auto member) { return path(jam, member); };
+    binding.integer(field(&JamOptions::particles), "particles", "1", "particles N, half small, half large")
+        .at_least(2);
+    binding.integer(field(&JamOptions::nodes_small), "nodes_small", "1", "vertices of the small particles")
+        .at_least(3);
+    binding.integer(field(&JamOptions::nodes_large), "nodes_large", "1", "vertices of the large particles")
+        .at_least(3);
+    binding.word(field(&JamOptions::model), "model",
+                 {"smooth_disk", "rough_disk", "shell", "floppy", "surface_tension"},
+                 "smooth bidisperse disks, rigid rough polygons (rough disks) or rough deformable particles "
+                 "of Table 9.1");
+    binding.seed(field(&JamOptions::seed), "seed", "seed of the random initial placement");
+    binding
+        .real(field(&JamOptions::pressure_onset), "pressure_onset", "k_c or k_a a0",
+              "P_t: jamming onset pressure")
+        .positive();
+    binding
+        .real(field(&JamOptions::pressure_max), "pressure_max", "k_c or k_a a0",
+              "largest pressure of the compression")
+        .positive();
+    binding.integer(field(&JamOptions::pressures), "pressures", "1", "pressures log-spaced above onset")
+        .at_least(1);
+    binding
+        .real(field(&JamOptions::A0_floppy), "A0", "1",
+              "floppy: preferred shape parameter A0 (Fig. 9.14: 1.04)")
+        .at_least(1.0)
+        .renamed_from("A0_floppy");
+    binding
+        .real(field(&JamOptions::kl_surface), "kl_surface", "k_c",
+              "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
+        .non_negative();
+    binding.choice(
+        field(&JamOptions::relaxation), "relaxation",
+        {{"fire", Relaxation::fire}, {"fire_newton", Relaxation::fire_newton}},
+        "minimiser after each box step: FIRE alone, or FIRE handing over to a regularised Newton "
+        "finisher on the sparse Hessian where it crawls (newton_relax.hpp; rough_disk: fire only)");
+}
+
+// A scene with a `model` choice that is set to disks (smooth_disk or disks; a scene without one: false).
+bool disks(const Parameters& p);
+// The vertices of a bidisperse packing of the parameters particles, nodes_small and nodes_large, half small
+// and half large particles (a disk is one vertex), and what they are counted in.
+double bidisperse_vertices(const Parameters& p);
+const char* bidisperse_basis(const Parameters& p);
+MemoryEstimate bidisperse_memory(const Parameters& p);
+
+} // namespace softgrain::dpm
