@@ -2,7 +2,7 @@
 // of eqs. (9.15)-(9.17), an elastic shell (eq. 9.2) or a spring-network ball; F~ = F_a (1 - nu^2)/(E D^2)
 // against delta~ = delta/D, and the exponents of F~ ~ delta~^alpha at small and large compression and while
 // the pole vertex alone touches the plate (decision dpm-compress3d-windows).
-#include "dpm/compress3d_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 
 #include "core/errors.hpp"
 #include "core/fits.hpp"
@@ -216,14 +216,31 @@ void run_compress3d(const Compress3dOptions& options, RunContext& context)
 
 } // namespace
 
-void run_compress3d(const Parameters& p, RunContext& context)
+Scene compress3d_scene()
 {
-    run_compress3d(compress3d_binding().read(p), context);
-}
-
-std::vector<ParameterSpec> compress3d_parameters()
-{
-    return compress3d_binding().specs();
+    return bound_scene("dpm.compress3d",
+                       "DPM sec. 9.3.4: elastic tetrahedra (eqs. 9.15-9.17), an elastic shell or a "
+                       "spring-network ball "
+                       "compressed between two plates, F~ against delta/D and its exponents (Fig. 9.11)",
+                       compress3d_binding(), run_compress3d)
+        .advised_by({"compare",
+                     "compare-solid-work-precision",
+                     "method_index",
+                     {"tetrahedra", "spring_network"},
+                     "",
+                     "",
+                     "vertices",
+                     "surface vertices + 1 (tetrahedra) or nodes (network)",
+                     "fe_error_max",
+                     "largest |F~/F~_FE - 1| over 0.01 <= delta/D <= 0.2 against the finite-element "
+                     "ball of the same law and nu (data/compare/solid_fe.toml)"})
+        .needing([](const Parameters& p) {
+            // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
+            if (p.choice("model") != "spring_network") return MemoryEstimate{};
+            return dense_matrix_memory(3 * static_cast<double>(p.integer("network_nodes")), 1,
+                                       "3 x network_nodes");
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm

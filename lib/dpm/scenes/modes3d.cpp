@@ -1,15 +1,12 @@
-// dpm.shape3d: the closed triangulated meshes of section 9.3.1, their Euler counts and the shape
-// parameter A^3D = s^(3/2)/(6 sqrt(pi) v) of the undeformed mesh (the text's A_min^3D).
-// dpm.modes3d: eigenvalues of the dynamical matrix (eq. 9.28) of a single floppy, shell or
-// surface-tension particle in 3D (Fig. 9.15a), or (particles > 1) of a jammed bidisperse packing of them at
-// pressure P_t (jam3d.hpp, Fig. 9.15b).
-#include "dpm/scenes3d.hpp"
-
+// dpm.modes3d: eigenvalues of the dynamical matrix (eq. 9.28) of a single floppy, shell or surface-tension
+// particle in 3D (Fig. 9.15a), or (particles > 1) of a jammed bidisperse packing of them at pressure P_t
+// (jam3d.hpp, Fig. 9.15b).
 #include "core/errors.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
 #include "dpm/modes.hpp"
-#include "dpm/modes_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "dpm/single_particle3d.hpp"
 #include "dpm/sparse_modes.hpp"
 #include "dpm/vtk_frames.hpp"
@@ -25,64 +22,135 @@ namespace softgrain::dpm {
 
 namespace {
 
-const std::vector<std::string> mesh_names{"tetrahedron", "octahedron",  "icosahedron",
-                                          "geodesic42",  "geodesic162", "geodesic642"};
-
-// A0 of the run: none (the mesh's own A^3D) for the keyword `min`.
-std::optional<double> preferred_shape3d(const Parameters& p)
+// dpm.modes3d's options: the particle (a single one, or the jamming protocol of a packing of them) and the
+// spectrum.
+struct Modes3dOptions
 {
-    if (p.keyword("A0")) return std::nullopt;
-    return p.real("A0");
-}
+    Jam3dOptions jam = scene_jam_defaults();
+    std::optional<double> A0 = 1.04; // nothing: `min`, the mesh's own A^3D
+    double soft_threshold = 1e-4;    // [k_v v0^(4/3)]
+    int lowest_modes = 0;            // 0: every mode (dense)
 
-} // namespace
-
-void run_shape3d(const Parameters& p, RunContext& context)
-{
-    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
-    const Eigen::VectorXd x = mesh_coordinates(mesh);
-    const double volume = mesh_volume(mesh, x, 0), surface = mesh_surface_area(mesh, x, 0);
-    const std::vector<double> areas = mesh_face_areas(mesh, x, 0), angles = mesh_bending_angles(mesh, x, 0);
-    auto& faces =
-        context.table("faces.dat", {{"f", "1", "face index"},
-                                    {"area", "R^2", "face area a_f (vertices on the unit sphere)"}});
-    for (std::size_t f = 0; f < areas.size(); ++f)
-        faces.row({double(f), areas[f]});
-    auto& s = context.summary();
-    s["vertices"] = mesh.vertex_count();
-    s["faces"] = mesh.face_count();
-    s["edges"] = mesh.edge_count();
-    s["euler_characteristic"] = mesh.vertex_count() + mesh.face_count() - mesh.edge_count();
-    s["volume"] = volume;
-    s["surface_area"] = surface;
-    s["shape_parameter_min"] = shape_parameter3d(surface, volume);
-    s["face_area_ratio"] =
-        *std::max_element(areas.begin(), areas.end()) / *std::min_element(areas.begin(), areas.end());
-    s["bending_angle_min"] = *std::min_element(angles.begin(), angles.end());
-    s["bending_angle_max"] = *std::max_element(angles.begin(), angles.end());
-    // ParaView: one frame (time value 0) of the bare mesh on the unit sphere (no vertex spheres: radius 0;
-    // no energy: force 0; volume_ratio 1), with each face's area a_f of faces.dat as cell data face_area and
-    // the summary's shape parameter, volume and surface as field data.
-    if (auto* series = context.vtk()) {
-        vtk::PolyData particle =
-            mesh_particles({MeshParticle{&mesh, 0, 0.0, volume, Eigen::Vector3d::Zero()}}, x,
-                           Eigen::VectorXd::Zero(x.size()));
-        particle.cell_scalars("face_area", areas);
-        particle.field("shape_parameter", shape_parameter3d(surface, volume));
-        particle.field("volume", volume);
-        particle.field("surface_area", surface);
-        series->write(0.0, {{"particles", std::move(particle)}});
+    // The scene's defaults where they differ from the library's.
+    static Jam3dOptions scene_jam_defaults()
+    {
+        Jam3dOptions jam;
+        jam.model = ShapeModel::floppy;
+        jam.particles = 1;
+        return jam;
     }
-}
+};
 
-std::vector<ParameterSpec> shape3d_parameters()
+OptionBinding<Modes3dOptions> modes3d_binding()
 {
-    return {ParameterSpec::choice("mesh", "geodesic42", mesh_names,
-                                  "closed triangulated surface: Platonic solid or geodesic icosahedron "
-                                  "(vertices projected to the unit sphere)")};
+    const auto jam = [](auto... field) { return path(&Modes3dOptions::jam, field...); };
+    OptionBinding<Modes3dOptions> binding;
+    binding.choice(jam(&Jam3dOptions::model), "model",
+                   {{"floppy", ShapeModel::floppy},
+                    {"shell", ShapeModel::shell},
+                    {"surface_tension", ShapeModel::surface_tension}},
+                   "particle type of Table 9.1 (3D analogues)");
+    binding.word(jam(&Jam3dOptions::mesh), "mesh", particle_mesh_names(), "surface mesh of the particle");
+    binding
+        .real_or_keyword(&Modes3dOptions::A0, "A0", "min", "1",
+                         "preferred shape parameter (sum a_f0)^(3/2)/(6 sqrt(pi) v0); min selects the "
+                         "mesh's own A^3D (A_min of the text)")
+        .at_least(1.0);
+    binding
+        .real(jam(&Jam3dOptions::stiffness, &Stiffness3d::ka), "ka", "k_v v0^(2/3)",
+              "face-area stiffness k_a")
+        .positive();
+    binding
+        .real(jam(&Jam3dOptions::stiffness, &Stiffness3d::kb), "kb", "k_v v0^2",
+              "bending stiffness k_b (shell)")
+        .positive();
+    binding
+        .real(jam(&Jam3dOptions::stiffness, &Stiffness3d::gamma), "gamma", "k_v v0^(5/3)",
+              "surface tension gamma (surface_tension)")
+        .positive();
+    binding
+        .real(jam(&Jam3dOptions::zero_threshold), "zero_threshold", "k_v v0^(4/3)",
+              "zero mode: lambda~ below this (Fig. 9.15a), or below the round-off bound n eps "
+              "max|lambda~| where that is larger (summary zero_threshold_used)")
+        .positive();
+    binding.seed(jam(&Jam3dOptions::seed), "seed",
+                 "seed of the random displacement of the start (single particle) or of the random "
+                 "positions and orientations (packing)");
+    binding
+        .integer(jam(&Jam3dOptions::particles), "particles", "1",
+                 "1: a single particle (Fig. 9.15a); an even number >= 2: a jammed 50:50 bidisperse "
+                 "packing of that many particles in a periodic cube (Fig. 9.15b)")
+        .at_least(1);
+    binding
+        .real(jam(&Jam3dOptions::pressure_onset), "pressure", "k_v v0",
+              "packing: jamming pressure P_t (1 <= P/P_t < 1.01)")
+        .positive();
+    binding
+        .real(jam(&Jam3dOptions::size_ratio), "size_ratio", "1",
+              "packing: diameter ratio of large to small particles")
+        .at_least(1.0);
+    binding.choice(jam(&Jam3dOptions::interaction), "contact",
+                   {{"rough", InteractionKind::rough}, {"smooth", InteractionKind::smooth}},
+                   "packing: contacts between particles: rough = vertex spheres of diameter sigma "
+                   "(eqs. 9.3-9.4), smooth = each vertex sphere against the faces of the other "
+                   "particle's mesh (sphero-polyhedra, Fig. 9.6d; decision "
+                   "dpm-3d-smooth-inclusion-exclusion)");
+    binding
+        .real(&Modes3dOptions::soft_threshold, "soft_threshold", "k_v v0^(4/3)",
+              "packing: a non-zero mode below this counts as soft (low-frequency), summary soft_modes")
+        .positive();
+    binding
+        .integer(jam(&Jam3dOptions::saddle_escapes), "saddle_escapes", "1",
+                 "packing: at most this many moves off a saddle at P_t, each followed by "
+                 "compression to P_t again (decision dpm-packing-minimum); 0: the protocol's "
+                 "first state is kept. Summary saddle_escapes: the moves made")
+        .non_negative();
+    // A count of FIRE steps (a long in the protocol) with the range it always had.
+    binding
+        .count(jam(&Jam3dOptions::fire_budget), "fire_budget", "1",
+               "packing: FIRE steps allowed per relaxation of the jamming protocol; a "
+               "relaxation that needs more stops the run with exit 3 (decision "
+               "dpm-3d-jam-paper-size)")
+        .at_least(1)
+        .at_most(std::numeric_limits<int>::max());
+    binding
+        .real(jam(&Jam3dOptions::jump_step), "jump_step", "1",
+              "packing: compressing towards P_t, an overshoot of the window at a box step "
+              "Delta L/L below this is kept and P_t approached from above by decompression (a "
+              "rearrangement that makes P jump over the window); 0: every overshoot is undone "
+              "and the step halved (decision dpm-3d-jam-paper-size)")
+        .non_negative();
+    binding
+        .integer(
+            &Modes3dOptions::lowest_modes, "lowest_modes", "1",
+            "packing: 0 = every mode by the dense eigensolver; K > 0 = only the K lowest, by "
+            "shift-and-invert "
+            "Lanczos on the sparse dynamical matrix (large packings). With K: lambda_max from Lanczos, no "
+            "lambda_median_nonzero, quartic_modes or soft_modes (they need every mode), and K must reach a "
+            "non-zero mode (summary modes_computed)")
+        .non_negative();
+    binding.check([](const Modes3dOptions& options) {
+        const bool packing = options.jam.particles > 1;
+        if (!packing && options.lowest_modes != 0)
+            throw InputError(
+                "lowest_modes = " + std::to_string(options.lowest_modes) +
+                " with particles = 1; allowed: 0 (a single particle's spectrum is dense and small)");
+        if (packing && options.jam.model == ShapeModel::floppy && !options.A0)
+            throw InputError(
+                "parameter 'A0' = 'min' for floppy packings; allowed: a real number above the mesh's "
+                "own A^3D (floppy particles need A0 > A_min)");
+    });
+    return binding;
 }
 
-namespace {
+// The zero-mode threshold of a spectrum `lambda` of n = degrees_of_freedom (every mode, or the lowest ones
+// with the separately computed `largest`): zero_threshold, or the round-off bound where that is larger
+// (zero_mode_threshold).
+double spectrum_threshold(const Eigen::VectorXd& lambda, Eigen::Index degrees_of_freedom, double largest,
+                          double zero_threshold)
+{
+    return zero_mode_threshold(degrees_of_freedom, std::max(std::abs(lambda(0)), largest), zero_threshold);
+}
 
 // Writes the spectrum (ascending, already in k_v v0^(4/3)) and returns its counts: zero modes below
 // zero_threshold in magnitude, or below the round-off bound where that is larger (zero_mode_threshold).
@@ -99,8 +167,7 @@ SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, Eigen::Index degree
                                           {"abs_lambda", "k_v v0^(4/3)", "|lambda~_k| (for log axes)"}});
     for (Eigen::Index i = 0; i < lambda.size(); ++i)
         spectrum.row({double(i + 1), lambda(i), std::abs(lambda(i))});
-    const double threshold =
-        zero_mode_threshold(degrees_of_freedom, std::max(std::abs(lambda(0)), largest), zero_threshold);
+    const double threshold = spectrum_threshold(lambda, degrees_of_freedom, largest, zero_threshold);
     const SpectrumCounts counts = count_modes(lambda, threshold);
     const int positive = counts.first_positive();
     if (!every_mode && positive >= lambda.size())
@@ -162,8 +229,8 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
             large_exponents.push_back(local_exponent(change(k, 0.1), change(k, 0.2), 0.1, 0.2, floor));
     }
     auto& s = context.summary();
-    s["quadratic_mode_exponent"] = median_or_null(small_exponents);
-    s["soft_mode_exponent_large"] = median_or_null(large_exponents);
+    s["quadratic_mode_exponent"] = value_or_null(median_exponent(small_exponents));
+    s["soft_mode_exponent_large"] = value_or_null(median_exponent(large_exponents));
 }
 
 // The softest non-zero mode e of a packing (Fig. 9.15d-f, decision dpm-3d-surface-tension-slope): its shares
@@ -240,139 +307,151 @@ ComputedModes3d compute_modes3d(const DpmSystem3d& system, const Eigen::VectorXd
     return {std::move(found.spectrum), found.largest_eigenvalue};
 }
 
-// Fig. 9.15(b): the spectrum of a jammed packing at P_t, Newton-polished to round-off forces first (a
-// residual force f shifts the zero modes by ~f R). The protocol moves a packing off a saddle and compresses
-// it again (jam3d.hpp); one left after `saddle_escapes` moves shows as negative modes (decision
-// dpm-packing-minimum).
-void run_packing_modes3d(const Parameters& p, RunContext& context)
+// Fig. 9.15(b): a jammed packing at P_t, Newton-polished to round-off forces first (a residual force f shifts
+// the zero modes by ~f R), and its modes. The protocol moves a packing off a saddle and compresses it again
+// (jam3d.hpp); one left after `saddle_escapes` moves shows as negative modes (decision dpm-packing-minimum).
+// Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
+// Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
+struct PackingModes3d
 {
-    Jam3dOptions o;
-    o.model = shape_model_from_name(p.choice("model"));
-    o.particles = static_cast<int>(p.integer("particles"));
-    o.mesh = p.choice("mesh");
-    o.size_ratio = p.real("size_ratio");
-    o.pressure_onset = p.real("pressure");
-    if (o.model == ShapeModel::floppy) {
-        if (p.keyword("A0"))
-            throw InputError(
-                "parameter 'A0' = 'min' for floppy packings; allowed: a real number above the mesh's "
-                "own A^3D (floppy particles need A0 > A_min)");
-        o.A0_floppy = p.real("A0");
-    }
-    o.stiffness.ka = p.real("ka");
-    o.stiffness.kb = p.real("kb");
-    o.stiffness.gamma = p.real("gamma");
-    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    o.interaction = interaction_from_name(p.choice("contact"));
-    o.saddle_escapes = static_cast<int>(p.integer("saddle_escapes"));
-    o.zero_threshold = p.real("zero_threshold");
-    o.fire_budget = p.integer("fire_budget");
-    o.jump_step = p.real("jump_step");
-    context.record_seed(o.seed);
-    Jam3dResult j = jam3d(o);
-    context.count_steps(j.fire_iterations);
-    // ParaView frames, one per relaxed pressure state (P_t, then the targets above it), the state index as
-    // the time value: the particles (whole, centres in the box) and the box, field data pressure [k_v v0]
-    // and phi.
-    if (auto* series = context.vtk())
-        for (std::size_t k = 0; k < j.states.size(); ++k) {
-            if (!series->next()) continue;
-            const Jam3dState& state = j.states[k];
-            DpmSystem3d at_state = j.system;
-            at_state.box = state.box;
-            std::vector<vtk::Part> parts{{"particles", dpm_particles3d(at_state, state.x)},
-                                         {"box", box_outline3d(state.box)}};
-            for (auto& part : parts) {
-                part.data.field("pressure", state.pressure);
-                part.data.field("phi", state.phi);
-            }
-            series->write(static_cast<double>(k), parts);
-        }
-    const EnergyWithDerivatives energy = [&j](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                                              Eigen::MatrixXd* h) {
-        return total_energy3d(j.system, y, g, h);
+    Jam3dResult packing;
+    double force_max = 0; // after the polish [k_c sigma]
+    ComputedModes3d computed;
+    double spectrum_seconds = 0;
+    Eigen::VectorXd lambda;    // [k_v v0^(4/3)]
+    SpectrumCounts counts;     // of lambda
+    std::vector<bool> quartic; // per mode
+};
+
+EnergyWithDerivatives packing_energy(const Jam3dResult& packing)
+{
+    return [&packing](const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian) {
+        return total_energy3d(packing.system, x, gradient, hessian);
     };
-    const double zero_threshold = p.real("zero_threshold");
-    const double force_max = polish_for_modes(energy, j.x, j.pressure_unit);
-
-    const int lowest = static_cast<int>(p.integer("lowest_modes"));
-    const auto started = std::chrono::steady_clock::now();
-    const ComputedModes3d computed = compute_modes3d(j.system, j.x, lowest);
-    const double spectrum_seconds = seconds_since(started);
-    const Eigen::VectorXd lambda = computed.modes.eigenvalues / j.eigenvalue_unit;
-    const bool every_mode = lowest == 0;
-    const SpectrumCounts counts =
-        write_spectrum(lambda, j.x.size(), computed.largest / j.eigenvalue_unit, zero_threshold, context);
-    const int positive = counts.first_positive();
-
-    // Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
-    // Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
-    const auto& modes = computed.modes.eigenvectors;
-    std::vector<bool> quartic(lambda.size(), false);
-    for (Eigen::Index k = positive; k < lambda.size(); ++k)
-        quartic[k] = quartic_energy_change(energy_change_along(energy, j.x, modes.col(k), 0.1),
-                                           computed.modes.eigenvalues(k), 0.1, 3.0);
-    const double soft = p.real("soft_threshold");
-    write_mode_energy3d(energy, j, lambda, modes, positive, soft, quartic, context);
-    write_softest_mode3d(j.system, j.x, computed.modes.eigenvalues, modes, positive, context);
-    // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
-    // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
-    const std::vector<int> contacts = contact_counts3d(j.system, j.x);
-    const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
-    const int free_modes = free_particle_zero_modes(o.model, j.system.meshes[0].vertex_count(), 3);
-    write_zero_mode_parts3d(j.system, j.x, modes.middleCols(counts.negative, counts.zero), contacts, context);
-    auto& s = context.summary();
-    s["particles"] = o.particles;
-    s["modes"] = lambda.size();
-    s["rattlers"] = rattlers;
-    s["zero_modes_without_rattlers"] = counts.zero - free_modes * rattlers;
-    s["spectrum_seconds"] = spectrum_seconds; // reported, never asserted
-    // Counts over every mode: only with the dense spectrum.
-    if (every_mode) {
-        s["quartic_modes"] = std::count(quartic.begin(), quartic.end(), true);
-        // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
-        s["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
-    }
-    s["pressure_reached"] = pressure3d(stress_tensor3d(j.system, j.x)) / j.pressure_unit;
-    s["phi"] = packing_fraction3d(j.system, j.x);
-    s["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
-    s["box_steps"] = j.box_steps;
-    s["saddle_escapes"] = j.saddle_escapes;
-    s["window_jumps"] = j.window_jumps;
-    s["fire_iterations"] = j.fire_iterations;
-    s["force_max"] = force_max / j.pressure_unit;
 }
 
-} // namespace
-
-void run_modes3d(const Parameters& p, RunContext& context)
+PackingModes3d packing_modes3d(const Modes3dOptions& options)
 {
-    if (p.integer("particles") > 1) {
-        run_packing_modes3d(p, context);
-        return;
+    Jam3dOptions jam = options.jam;
+    if (jam.model == ShapeModel::floppy) jam.A0_floppy = *options.A0;
+    PackingModes3d result;
+    result.packing = jam3d(jam);
+    const Jam3dResult& packing = result.packing;
+    result.force_max = polish_for_modes(packing_energy(packing), result.packing.x, packing.pressure_unit);
+    const auto started = std::chrono::steady_clock::now();
+    result.computed = compute_modes3d(packing.system, packing.x, options.lowest_modes);
+    result.spectrum_seconds = seconds_since(started);
+    result.lambda = result.computed.modes.eigenvalues / packing.eigenvalue_unit;
+    result.counts =
+        count_modes(result.lambda, spectrum_threshold(result.lambda, packing.x.size(),
+                                                      result.computed.largest / packing.eigenvalue_unit,
+                                                      options.jam.zero_threshold));
+    const auto& modes = result.computed.modes.eigenvectors;
+    const EnergyWithDerivatives energy = packing_energy(packing);
+    result.quartic.assign(static_cast<std::size_t>(result.lambda.size()), false);
+    for (Eigen::Index k = result.counts.first_positive(); k < result.lambda.size(); ++k)
+        result.quartic[k] = quartic_energy_change(energy_change_along(energy, packing.x, modes.col(k), 0.1),
+                                                  result.computed.modes.eigenvalues(k), 0.1, 3.0);
+    return result;
+}
+
+// ParaView frames, one per relaxed pressure state (P_t, then the targets above it), the state index as the
+// time value: the particles (whole, centres in the box) and the box, field data pressure [k_v v0] and phi.
+void write_state_frames(const Jam3dResult& packing, vtk::Series& series)
+{
+    for (std::size_t k = 0; k < packing.states.size(); ++k) {
+        if (!series.next()) continue;
+        const Jam3dState& state = packing.states[k];
+        DpmSystem3d at_state = packing.system;
+        at_state.box = state.box;
+        std::vector<vtk::Part> parts{{"particles", dpm_particles3d(at_state, state.x)},
+                                     {"box", box_outline3d(state.box)}};
+        for (auto& part : parts) {
+            part.data.field("pressure", state.pressure);
+            part.data.field("phi", state.phi);
+        }
+        series.write(static_cast<double>(k), parts);
     }
-    if (p.integer("lowest_modes") != 0)
-        throw InputError("lowest_modes = " + std::to_string(p.integer("lowest_modes")) +
-                         " with particles = 1; allowed: 0 (a single particle's spectrum is dense and small)");
-    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
-    Stiffness3d k;
-    k.ka = p.real("ka");
-    k.kb = p.real("kb");
-    k.gamma = p.real("gamma");
-    const auto seed = static_cast<std::uint64_t>(p.integer("seed"));
-    context.record_seed(seed);
-    const SingleParticle3d particle = single_particle3d_equilibrium(shape_model_from_name(p.choice("model")),
-                                                                    mesh, preferred_shape3d(p), k, seed);
+}
+
+void report_packing_modes3d(const Modes3dOptions& options, const PackingModes3d& result, RunContext& context)
+{
+    const Jam3dResult& packing = result.packing;
+    context.count_steps(packing.fire_iterations);
+    if (auto* series = context.vtk()) write_state_frames(packing, *series);
+    const Eigen::VectorXd& lambda = result.lambda;
+    const bool every_mode = options.lowest_modes == 0;
+    const SpectrumCounts counts =
+        write_spectrum(lambda, packing.x.size(), result.computed.largest / packing.eigenvalue_unit,
+                       options.jam.zero_threshold, context);
+    const int positive = counts.first_positive();
+    const auto& modes = result.computed.modes.eigenvectors;
+    const double soft = options.soft_threshold;
+    write_mode_energy3d(packing_energy(packing), packing, lambda, modes, positive, soft, result.quartic,
+                        context);
+    write_softest_mode3d(packing.system, packing.x, result.computed.modes.eigenvalues, modes, positive,
+                         context);
+    // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
+    // keeps the zero modes of a free particle (6 rigid motions; a floppy one N + 3, Fig. 9.15a).
+    const std::vector<int> contacts = contact_counts3d(packing.system, packing.x);
+    const auto rattlers = static_cast<int>(std::count(contacts.begin(), contacts.end(), 0));
+    const int free_modes =
+        free_particle_zero_modes(options.jam.model, packing.system.meshes[0].vertex_count(), 3);
+    write_zero_mode_parts3d(packing.system, packing.x, modes.middleCols(counts.negative, counts.zero),
+                            contacts, context);
+    auto& summary = context.summary();
+    summary["particles"] = options.jam.particles;
+    summary["modes"] = lambda.size();
+    summary["rattlers"] = rattlers;
+    summary["zero_modes_without_rattlers"] = counts.zero - free_modes * rattlers;
+    summary["spectrum_seconds"] = result.spectrum_seconds; // reported, never asserted
+    // Counts over every mode: only with the dense spectrum.
+    if (every_mode) {
+        summary["quartic_modes"] = std::count(result.quartic.begin(), result.quartic.end(), true);
+        // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
+        summary["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
+    }
+    summary["pressure_reached"] =
+        pressure3d(stress_tensor3d(packing.system, packing.x)) / packing.pressure_unit;
+    summary["phi"] = packing_fraction3d(packing.system, packing.x);
+    summary["vertex_contacts"] = std::accumulate(contacts.begin(), contacts.end(), 0) / 2;
+    summary["box_steps"] = packing.box_steps;
+    summary["saddle_escapes"] = packing.saddle_escapes;
+    summary["window_jumps"] = packing.window_jumps;
+    summary["fire_iterations"] = packing.fire_iterations;
+    summary["force_max"] = result.force_max / packing.pressure_unit;
+}
+
+// Fig. 9.15(a): a single particle relaxed from a random displacement of its mesh, and the eigenvalues of eq.
+// (9.28) with unit vertex masses, in k_v v0^(4/3) = 1.
+struct ParticleModes3d
+{
+    SingleParticle3d particle;
+    Eigen::VectorXd lambda;
+};
+
+ParticleModes3d particle_modes3d(const Modes3dOptions& options)
+{
+    const Jam3dOptions& jam = options.jam;
+    ParticleModes3d result;
+    result.particle = single_particle3d_equilibrium(jam.model, mesh_from_name(jam.mesh), options.A0,
+                                                    jam.stiffness, jam.seed);
+    const SingleParticle3d& particle = result.particle;
+    Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(particle.x.size(), particle.x.size());
+    shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &hessian);
+    result.lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(hessian, Eigen::EigenvaluesOnly).eigenvalues();
+    return result;
+}
+
+void report_particle_modes3d(const Modes3dOptions& options, const ParticleModes3d& result,
+                             RunContext& context)
+{
+    const SingleParticle3d& particle = result.particle;
     context.count_steps(particle.fire_iterations);
-
-    // Eq. (9.28) with unit vertex masses; eigenvalues in k_v v0^(4/3) = 1.
-    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(particle.x.size(), particle.x.size());
-    shape_energy3d(particle.shape, particle.mesh, particle.x, 0, nullptr, &m);
-    const Eigen::VectorXd lambda =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
-    const SpectrumCounts counts = write_spectrum(lambda, lambda.size(), lambda.cwiseAbs().maxCoeff(),
-                                                 p.real("zero_threshold"), context);
-
+    const SpectrumCounts counts =
+        write_spectrum(result.lambda, result.lambda.size(), result.lambda.cwiseAbs().maxCoeff(),
+                       options.jam.zero_threshold, context);
     const Eigen::VectorXd& x = particle.x;
     // ParaView: one frame, the relaxed particle (vertex diameter 1: the mesh's own unit here).
     if (auto* series = context.vtk(); series && series->next()) {
@@ -383,82 +462,39 @@ void run_modes3d(const Parameters& p, RunContext& context)
                         mesh_particles({{&particle.mesh, 0, 1.0, particle.shape.v0, Eigen::Vector3d::Zero()}},
                                        x, gradient)}});
     }
-    auto& s = context.summary();
-    s["zero_modes_nontrivial"] = counts.zero - 6;
-    s["vertices"] = particle.mesh.vertex_count();
-    s["A_mesh"] = particle.A_mesh;
-    s["A0_used"] = particle.A0;
-    s["shape_parameter"] = mesh_shape_parameter3d(particle.mesh, x, 0);
-    s["volume"] = mesh_volume(particle.mesh, x, 0);
-    s["energy"] = shape_energy3d(particle.shape, particle.mesh, x, 0, nullptr, nullptr);
-    s["force_max"] = particle.force_max;
+    auto& summary = context.summary();
+    summary["zero_modes_nontrivial"] = counts.zero - 6;
+    summary["vertices"] = particle.mesh.vertex_count();
+    summary["A_mesh"] = particle.A_mesh;
+    summary["A0_used"] = particle.A0;
+    summary["shape_parameter"] = mesh_shape_parameter3d(particle.mesh, x, 0);
+    summary["volume"] = mesh_volume(particle.mesh, x, 0);
+    summary["energy"] = shape_energy3d(particle.shape, particle.mesh, x, 0, nullptr, nullptr);
+    summary["force_max"] = particle.force_max;
 }
 
-std::vector<ParameterSpec> modes3d_parameters()
+void run_modes3d(const Modes3dOptions& options, RunContext& context)
 {
-    return {
-        ParameterSpec::choice("model", "floppy", {"floppy", "shell", "surface_tension"},
-                              "particle type of Table 9.1 (3D analogues)"),
-        ParameterSpec::choice("mesh", "geodesic42", mesh_names, "surface mesh of the particle"),
-        ParameterSpec::real("A0", 1.04, "1",
-                            "preferred shape parameter (sum a_f0)^(3/2)/(6 sqrt(pi) v0); min selects the "
-                            "mesh's own A^3D (A_min of the text)")
-            .at_least(1.0)
-            .keyword_allowed("min"),
-        ParameterSpec::real("ka", 1.0, "k_v v0^(2/3)", "face-area stiffness k_a").positive(),
-        ParameterSpec::real("kb", 0.1, "k_v v0^2", "bending stiffness k_b (shell)").positive(),
-        ParameterSpec::real("gamma", 0.01, "k_v v0^(5/3)", "surface tension gamma (surface_tension)")
-            .positive(),
-        ParameterSpec::real("zero_threshold", 1e-10, "k_v v0^(4/3)",
-                            "zero mode: lambda~ below this (Fig. 9.15a), or below the round-off bound n eps "
-                            "max|lambda~| where that is larger (summary zero_threshold_used)")
-            .positive(),
-        ParameterSpec::seed("seed", 1,
-                            "seed of the random displacement of the start (single particle) or of the random "
-                            "positions and orientations (packing)"),
-        ParameterSpec::integer(
-            "particles", 1, "1",
-            "1: a single particle (Fig. 9.15a); an even number >= 2: a jammed 50:50 bidisperse "
-            "packing of that many particles in a periodic cube (Fig. 9.15b)")
-            .at_least(1),
-        ParameterSpec::real("pressure", 1e-7, "k_v v0", "packing: jamming pressure P_t (1 <= P/P_t < 1.01)")
-            .positive(),
-        ParameterSpec::real("size_ratio", 1.4, "1", "packing: diameter ratio of large to small particles")
-            .at_least(1.0),
-        ParameterSpec::choice("contact", "rough", {"rough", "smooth"},
-                              "packing: contacts between particles: rough = vertex spheres of diameter sigma "
-                              "(eqs. 9.3-9.4), smooth = each vertex sphere against the faces of the other "
-                              "particle's mesh (sphero-polyhedra, Fig. 9.6d; decision "
-                              "dpm-3d-smooth-inclusion-exclusion)"),
-        ParameterSpec::real(
-            "soft_threshold", 1e-4, "k_v v0^(4/3)",
-            "packing: a non-zero mode below this counts as soft (low-frequency), summary soft_modes")
-            .positive(),
-        ParameterSpec::integer("saddle_escapes", 4, "1",
-                               "packing: at most this many moves off a saddle at P_t, each followed by "
-                               "compression to P_t again (decision dpm-packing-minimum); 0: the protocol's "
-                               "first state is kept. Summary saddle_escapes: the moves made")
-            .non_negative(),
-        ParameterSpec::integer("fire_budget", 1000000, "1",
-                               "packing: FIRE steps allowed per relaxation of the jamming protocol; a "
-                               "relaxation that needs more stops the run with exit 3 (decision "
-                               "dpm-3d-jam-paper-size)")
-            .at_least(1),
-        ParameterSpec::real("jump_step", 0.0, "1",
-                            "packing: compressing towards P_t, an overshoot of the window at a box step "
-                            "Delta L/L below this is kept and P_t approached from above by decompression (a "
-                            "rearrangement that makes P jump over the window); 0: every overshoot is undone "
-                            "and the step halved (decision dpm-3d-jam-paper-size)")
-            .non_negative(),
-        ParameterSpec::integer(
-            "lowest_modes", 0, "1",
-            "packing: 0 = every mode by the dense eigensolver; K > 0 = only the K lowest, by "
-            "shift-and-invert "
-            "Lanczos on the sparse dynamical matrix (large packings). With K: lambda_max from Lanczos, no "
-            "lambda_median_nonzero, quartic_modes or soft_modes (they need every mode), and K must reach a "
-            "non-zero mode (summary modes_computed)")
-            .non_negative(),
-    };
+    context.record_seed(options.jam.seed);
+    if (options.jam.particles > 1)
+        report_packing_modes3d(options, packing_modes3d(options), context);
+    else
+        report_particle_modes3d(options, particle_modes3d(options), context);
+}
+
+} // namespace
+
+Scene modes3d_scene()
+{
+    return bound_scene("dpm.modes3d",
+                       "DPM eq. (9.2), (9.28): eigenvalues of the dynamical matrix of a single 3D floppy / "
+                       "shell / surface-tension particle and its zero modes (Fig. 9.15a), or of a jammed "
+                       "bidisperse packing of them (particles > 1, Fig. 9.15b)",
+                       modes3d_binding(), run_modes3d)
+        .needing([](const Parameters& p) {
+            return packing3d_memory(static_cast<double>(p.integer("particles")), p.choice("mesh"), 2);
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm

@@ -1,19 +1,98 @@
 // dpm.shear_friction: the simple-shear test of section 9.3.3 (Figs. 9.8, 9.9): mu_eff against x/D.
-#include "dpm/shear_scene.hpp"
-
+#include "dpm/shear_friction.hpp"
 #include "core/errors.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/frozen_contact.hpp"
 #include "dpm/preferred_shape.hpp"
-#include "dpm/shear_friction.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace softgrain::dpm {
 
 namespace {
+
+enum class FrameRange { contact, scan };
+
+// Appendix A's scan freezes the shapes of a smooth contact at the maximum of mu_eff.
+const char* const frozen_scan_needs =
+    "frozen_scan = true needs interaction = smooth and a contact (Appendix A)";
+
+// dpm.shear_friction's options: the shear test, the frames drawn, and the frozen-contact scan.
+struct ShearFrictionOptions
+{
+    ShearTestOptions test;
+    FrameRange frame_range = FrameRange::contact;
+    int frames = 7;
+    bool frozen_scan = false;
+    int scan_points = 41; // per direction
+};
+
+OptionBinding<ShearFrictionOptions> shear_friction_binding()
+{
+    const auto test = [](auto field) { return path(&ShearFrictionOptions::test, field); };
+    OptionBinding<ShearFrictionOptions> binding;
+    binding.choice(test(&ShearTestOptions::interaction), "interaction",
+                   {{"rough", InteractionKind::rough}, {"smooth", InteractionKind::smooth}},
+                   "rough (eqs. 9.3-9.4) or smooth (9.5-9.9)");
+    binding
+        .integer(test(&ShearTestOptions::nodes), "nodes", "1",
+                 "vertices N per particle (even: flat bottom and top)")
+        .at_least(4);
+    binding
+        .real(test(&ShearTestOptions::C), "C", "1", "C = R/sigma, polygon circumradius over vertex diameter")
+        .positive();
+    binding
+        .real_or_keyword(test(&ShearTestOptions::A0), "A0", "min", "1",
+                         "preferred shape parameter (N l0)^2/(4 pi a0); min = N tan(pi/N)/pi")
+        .at_least(1.0);
+    binding
+        .real(test(&ShearTestOptions::kl), "kl", "k_c", "edge stiffness k_l/k_c (stiff shells 100, floppy 1)")
+        .positive();
+    binding
+        .real(test(&ShearTestOptions::kb), "kb", "k_c sigma^2",
+              "bending stiffness k_b/(k_c sigma^2); 0 = floppy")
+        .non_negative();
+    binding
+        .real(test(&ShearTestOptions::ka), "ka", "k_c sigma^2/a0^2", "area stiffness k_a a0^2/(k_c sigma^2)")
+        .positive();
+    binding
+        .real(test(&ShearTestOptions::k_constraint), "k_constraint", "k_c", "anchor springs k_constraint/k_c")
+        .positive();
+    binding
+        .real(test(&ShearTestOptions::overlap), "overlap", "sigma",
+              "rest overlap 1 - r/sigma of the groove contact (sets the gap)")
+        .non_negative()
+        .below(1.0);
+    binding.real(test(&ShearTestOptions::dx), "dx", "D_beta", "shift of the anchors per step").positive();
+    binding.real(test(&ShearTestOptions::x_start), "x_start", "D_beta", "first x_bm / D_beta");
+    binding.real(test(&ShearTestOptions::x_end), "x_end", "D_beta", "last x_bm / D_beta");
+    binding.seed(test(&ShearTestOptions::seed), "seed", "noise seed for floppy particles (kb = 0)");
+    binding.choice(&ShearFrictionOptions::frame_range, "frame_range",
+                   {{"contact", FrameRange::contact}, {"scan", FrameRange::scan}},
+                   "frames evenly spaced from the first to the last contact, or over the whole scan "
+                   "x_start..x_end (for particles that may not touch)");
+    binding
+        .integer(&ShearFrictionOptions::frames, "frames", "1",
+                 "snapshots over frame_range written to frames.dat")
+        .non_negative();
+    binding.boolean(&ShearFrictionOptions::frozen_scan, "frozen_scan",
+                    "Appendix A (Fig. 9.19e): mu_eff with the shapes of the maximum frozen, mu "
+                    "translated (smooth interaction)");
+    binding
+        .integer(&ShearFrictionOptions::scan_points, "scan_points", "1", "frozen scan: points per direction")
+        .at_least(3);
+    binding.check([](const ShearFrictionOptions& options) {
+        preferred_shape_parameter(options.test.A0, options.test.nodes); // A0 >= A_min(nodes), or min
+        if (options.frozen_scan && options.test.interaction != InteractionKind::smooth)
+            throw InputError(frozen_scan_needs);
+    });
+    return binding;
+}
 
 std::vector<Column> outline_columns()
 {
@@ -28,10 +107,10 @@ void write_outlines(Table& table, const DpmSystem& system, const Eigen::VectorXd
                     double x_over_d)
 {
     for (std::size_t m = 0; m < system.particles.size(); ++m) {
-        const Particle& q = system.particles[m];
-        for (int v = 0; v <= q.count; ++v) { // closed outline
-            const int w = q.first + v % q.count;
-            table.row({double(frame), x_over_d, double(m), x(2 * w), x(2 * w + 1)});
+        const Particle& particle = system.particles[m];
+        for (int v = 0; v <= particle.count; ++v) { // closed outline
+            const int vertex = particle.first + v % particle.count;
+            table.row({double(frame), x_over_d, double(m), x(2 * vertex), x(2 * vertex + 1)});
         }
     }
 }
@@ -39,21 +118,21 @@ void write_outlines(Table& table, const DpmSystem& system, const Eigen::VectorXd
 // Frames 1..n of Figs. 9.8(a-c), 9.9(a, c): the relaxed configurations nearest to n positions evenly spaced
 // from the first to the last contact (frame_range = contact) or over the whole scan (frame_range = scan, for
 // particles that may not touch; decision dpm-shear-frames).
-void write_frames(const Parameters& p, const ShearTestResult& r, RunContext& context)
+void write_frames(const ShearFrictionOptions& options, const ShearTestResult& test, RunContext& context)
 {
-    const int frames = static_cast<int>(p.integer("frames"));
-    const bool over_contact = p.choice("frame_range") == "contact";
-    if (frames == 0 || (over_contact ? r.samples.empty() : r.configurations.empty())) return;
+    const int frames = options.frames;
+    const bool over_contact = options.frame_range == FrameRange::contact;
+    if (frames == 0 || (over_contact ? test.samples.empty() : test.configurations.empty())) return;
     auto& table = context.table("frames.dat", outline_columns());
-    const double first = over_contact ? r.samples.front().x_over_d : r.configurations.front().first;
-    const double last = over_contact ? r.samples.back().x_over_d : r.configurations.back().first;
+    const double first = over_contact ? test.samples.front().x_over_d : test.configurations.front().first;
+    const double last = over_contact ? test.samples.back().x_over_d : test.configurations.back().first;
     for (int k = 0; k < frames; ++k) {
         const double wanted = frames == 1 ? first : first + (last - first) * k / (frames - 1);
         const auto nearest = std::min_element(
-            r.configurations.begin(), r.configurations.end(), [wanted](const auto& a, const auto& b) {
+            test.configurations.begin(), test.configurations.end(), [wanted](const auto& a, const auto& b) {
                 return std::abs(a.first - wanted) < std::abs(b.first - wanted);
             });
-        write_outlines(table, r.system, nearest->second, k + 1, nearest->first);
+        write_outlines(table, test.system, nearest->second, k + 1, nearest->first);
     }
 }
 
@@ -110,109 +189,94 @@ class ShearFrames
     std::vector<double> path_x_over_d_;
 };
 
-} // namespace
-
-void run_shear_friction(const Parameters& p, RunContext& context)
+// The shear test and, with frozen_scan, Appendix A's scan of the frozen contact at the maximum of mu_eff.
+struct ShearFrictionResult
 {
-    ShearTestOptions o;
-    o.interaction = interaction_from_name(p.choice("interaction"));
-    o.nodes = static_cast<int>(p.integer("nodes"));
-    o.C = p.real("C");
-    o.A0 = preferred_shape_parameter(p, "A0", o.nodes);
-    o.kl = p.real("kl");
-    o.kb = p.real("kb");
-    o.ka = p.real("ka");
-    o.k_constraint = p.real("k_constraint");
-    o.overlap = p.real("overlap");
-    o.dx = p.real("dx");
-    o.x_start = p.real("x_start");
-    o.x_end = p.real("x_end");
-    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    if (o.kb == 0) context.record_seed(o.seed);
-    const ShearTestResult r =
-        context.vtk() ? simple_shear_test(o, ShearFrames(*context.vtk())) : simple_shear_test(o);
-    context.count_steps(r.iterations);
+    ShearTestResult test;
+    std::optional<FrozenContactScan> frozen;
+};
 
+ShearFrictionResult shear_friction(const ShearFrictionOptions& options, RunContext& context)
+{
+    ShearFrictionResult result;
+    result.test = context.vtk() ? simple_shear_test(options.test, ShearFrames(*context.vtk()))
+                                : simple_shear_test(options.test);
+    if (options.frozen_scan) {
+        if (result.test.samples.empty()) throw InputError(frozen_scan_needs);
+        result.frozen = frozen_contact_scan(result.test.system, result.test.x_star, options.scan_points,
+                                            options.scan_points);
+    }
+    return result;
+}
+
+void write_frozen_scan(const FrozenContactScan& scan, const ShearTestResult& test, RunContext& context)
+{
+    auto& table = context.table(
+        "frozen_contact.dat",
+        {{"rx", "sigma", "x of r_{beta r, mu t} (mu translated rigidly, shapes of the maximum)"},
+         {"ry", "sigma", "y of r_{beta r, mu t}"},
+         {"overlap_fraction", "1", "ry / ry at zero overlap (0 = deepest, 1 = zero-overlap limit)"},
+         {"mu_eff", "1", "F_t / F_n, eq. (9.10)"},
+         {"F_n", "k_c sigma", "eq. (9.11)"},
+         {"F_t", "k_c sigma", "eq. (9.12)"}});
+    for (const FrozenContactPoint& point : scan.points)
+        table.row({point.rx, point.ry, point.overlap_fraction, point.mu_eff, point.normal, point.tangential});
+    write_outlines(context.table("star_shape.dat", outline_columns()), test.system, test.x_star, 0,
+                   test.x_at_max);
+    auto& summary = context.summary();
+    summary["frozen_star_rx"] = scan.star.x();
+    summary["frozen_star_ry"] = scan.star.y();
+    summary["frozen_mu_eff_star"] = scan.mu_eff_star;
+    summary["frozen_mu_eff_max_at_star_height"] = scan.mu_eff_max_at_star_height;
+    summary["frozen_rx_at_max"] = scan.rx_at_max;
+    summary["frozen_min_force"] = scan.min_force;
+    summary["frozen_mu_eff_zero_overlap"] = scan.mu_eff_zero_overlap;
+}
+
+void report_shear_friction(const ShearFrictionOptions& options, const ShearFrictionResult& result,
+                           RunContext& context)
+{
+    const ShearTestResult& test = result.test;
     auto& table = context.table("shear.dat", {{"x_over_D", "1", "x_bm / D_beta (section 9.3.3)"},
                                               {"mu_eff", "1", "F_t / F_n, eq. (9.10)"},
                                               {"F_n", "k_c sigma", "normal force on mu, eq. (9.11)"},
                                               {"F_t", "k_c sigma", "tangential force on mu, eq. (9.12)"},
                                               {"energy", "k_c sigma^2", "total energy after relaxation"}});
-    for (const ShearSample& s : r.samples)
-        table.row({s.x_over_d, s.mu_eff, s.normal_force, s.tangential_force, s.energy});
-    write_outlines(context.table("final_shape.dat", outline_columns()), r.system, r.x, 0, 0);
-    write_frames(p, r, context);
+    for (const ShearSample& sample : test.samples)
+        table.row(
+            {sample.x_over_d, sample.mu_eff, sample.normal_force, sample.tangential_force, sample.energy});
+    write_outlines(context.table("final_shape.dat", outline_columns()), test.system, test.x, 0, 0);
+    write_frames(options, test, context);
+    if (result.frozen) write_frozen_scan(*result.frozen, test, context);
 
-    auto& s = context.summary();
-    if (p.boolean("frozen_scan")) {
-        if (r.samples.empty() || o.interaction != InteractionKind::smooth)
-            throw InputError("frozen_scan = true needs interaction = smooth and a contact (Appendix A)");
-        const int nx = static_cast<int>(p.integer("scan_points"));
-        const FrozenContactScan scan = frozen_contact_scan(r.system, r.x_star, nx, nx);
-        auto& scan_table = context.table(
-            "frozen_contact.dat",
-            {{"rx", "sigma", "x of r_{beta r, mu t} (mu translated rigidly, shapes of the maximum)"},
-             {"ry", "sigma", "y of r_{beta r, mu t}"},
-             {"overlap_fraction", "1", "ry / ry at zero overlap (0 = deepest, 1 = zero-overlap limit)"},
-             {"mu_eff", "1", "F_t / F_n, eq. (9.10)"},
-             {"F_n", "k_c sigma", "eq. (9.11)"},
-             {"F_t", "k_c sigma", "eq. (9.12)"}});
-        for (const FrozenContactPoint& q : scan.points)
-            scan_table.row({q.rx, q.ry, q.overlap_fraction, q.mu_eff, q.normal, q.tangential});
-        write_outlines(context.table("star_shape.dat", outline_columns()), r.system, r.x_star, 0, r.x_at_max);
-        s["frozen_star_rx"] = scan.star.x();
-        s["frozen_star_ry"] = scan.star.y();
-        s["frozen_mu_eff_star"] = scan.mu_eff_star;
-        s["frozen_mu_eff_max_at_star_height"] = scan.mu_eff_max_at_star_height;
-        s["frozen_rx_at_max"] = scan.rx_at_max;
-        s["frozen_min_force"] = scan.min_force;
-        s["frozen_mu_eff_zero_overlap"] = scan.mu_eff_zero_overlap;
-    }
-
-    s["mu_eff_max"] = r.mu_eff_max;
-    s["x_at_max"] = r.x_at_max;
-    s["mu_eff_max_eq_9_13"] = rough_friction_maximum(o.C, o.nodes);
-    s["contact_samples"] = r.samples.size();
-    s["D_beta"] = r.d_beta;
+    auto& summary = context.summary();
+    summary["mu_eff_max"] = test.mu_eff_max;
+    summary["x_at_max"] = test.x_at_max;
+    summary["mu_eff_max_eq_9_13"] = rough_friction_maximum(options.test.C, options.test.nodes);
+    summary["contact_samples"] = test.samples.size();
+    summary["D_beta"] = test.d_beta;
 }
 
-std::vector<ParameterSpec> shear_friction_parameters()
+void run_shear_friction(const ShearFrictionOptions& options, RunContext& context)
 {
-    return {
-        ParameterSpec::choice("interaction", "rough", {"rough", "smooth"},
-                              "rough (eqs. 9.3-9.4) or smooth (9.5-9.9)"),
-        ParameterSpec::integer("nodes", 8, "1", "vertices N per particle (even: flat bottom and top)")
-            .at_least(4),
-        ParameterSpec::real("C", 1.3, "1", "C = R/sigma, polygon circumradius over vertex diameter")
-            .positive(),
-        preferred_shape_parameter_spec(1.0, true,
-                                       "preferred shape parameter (N l0)^2/(4 pi a0); min = N tan(pi/N)/pi"),
-        ParameterSpec::real("kl", 100.0, "k_c", "edge stiffness k_l/k_c (stiff shells 100, floppy 1)")
-            .positive(),
-        ParameterSpec::real("kb", 171.0, "k_c sigma^2", "bending stiffness k_b/(k_c sigma^2); 0 = floppy")
-            .non_negative(),
-        ParameterSpec::real("ka", 14.0, "k_c sigma^2/a0^2", "area stiffness k_a a0^2/(k_c sigma^2)")
-            .positive(),
-        ParameterSpec::real("k_constraint", 100.0, "k_c", "anchor springs k_constraint/k_c").positive(),
-        ParameterSpec::real("overlap", 0.01, "sigma",
-                            "rest overlap 1 - r/sigma of the groove contact (sets the gap)")
-            .non_negative()
-            .below(1.0),
-        ParameterSpec::real("dx", 0.016, "D_beta", "shift of the anchors per step").positive(),
-        ParameterSpec::real("x_start", -0.7, "D_beta", "first x_bm / D_beta"),
-        ParameterSpec::real("x_end", 0.7, "D_beta", "last x_bm / D_beta"),
-        ParameterSpec::seed("seed", 1, "noise seed for floppy particles (kb = 0)"),
-        ParameterSpec::choice(
-            "frame_range", "contact", {"contact", "scan"},
-            "frames evenly spaced from the first to the last contact, or over the whole scan "
-            "x_start..x_end (for particles that may not touch)"),
-        ParameterSpec::integer("frames", 7, "1", "snapshots over frame_range written to frames.dat")
-            .non_negative(),
-        ParameterSpec::boolean("frozen_scan", false,
-                               "Appendix A (Fig. 9.19e): mu_eff with the shapes of the maximum frozen, mu "
-                               "translated (smooth interaction)"),
-        ParameterSpec::integer("scan_points", 41, "1", "frozen scan: points per direction").at_least(3),
-    };
+    if (options.test.kb == 0) context.record_seed(options.test.seed);
+    const ShearFrictionResult result = shear_friction(options, context);
+    context.count_steps(result.test.iterations);
+    report_shear_friction(options, result, context);
+}
+
+} // namespace
+
+Scene shear_friction_scene()
+{
+    return bound_scene("dpm.shear_friction",
+                       "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
+                       "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
+                       shear_friction_binding(), run_shear_friction)
+        .needing([](const Parameters& p) {
+            return dpm_vertex_memory(2 * static_cast<double>(p.integer("nodes")), "vertices (2 x nodes)");
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm

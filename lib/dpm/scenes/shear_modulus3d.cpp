@@ -4,15 +4,16 @@
 // units k_v v0. Floppy, shell and surface-tension particles (or all three, same seeds and starts). Tables
 // modulus_<model>.dat (every packing) and mean_modulus_<model>.dat (<P>, <G>); summary: the exponent of
 // <G> ~ P^eta per model (shear_modulus_ensemble.hpp).
-#include "dpm/shear_modulus3d_scene.hpp"
-
 #include "core/ensemble.hpp"
 #include "core/errors.hpp"
+#include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
+#include "dpm/scenes/scenes.hpp"
 #include "dpm/shear_modulus_ensemble.hpp"
 #include "dpm/vtk_frames.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -20,37 +21,109 @@ namespace softgrain::dpm {
 
 namespace {
 
-const std::vector<std::string> model_names{"floppy", "shell", "surface_tension"};
-
-Jam3dOptions jam3d_options(const Parameters& p)
+// dpm.shear_modulus3d's options: the jamming protocol of every packing, the models and ensemble size, and
+// the strain steps.
+struct ShearModulus3dOptions
 {
-    Jam3dOptions o;
-    o.particles = static_cast<int>(p.integer("particles"));
-    o.mesh = p.choice("mesh");
-    o.pressure_onset = p.real("pressure_onset");
-    o.pressure_max = p.real("pressure_max");
-    o.pressures = static_cast<int>(p.integer("pressures"));
-    o.A0_floppy = p.real("A0_floppy");
-    o.interaction = interaction_from_name(p.choice("contact"));
-    o.seed = static_cast<std::uint64_t>(p.integer("seed"));
-    if (o.pressure_max <= o.pressure_onset)
-        throw InputError("pressure_max = " + std::to_string(o.pressure_max) +
-                         ": allowed a pressure above pressure_onset = " + std::to_string(o.pressure_onset));
-    return o;
+    Jam3dOptions jam = scene_jam_defaults();
+    std::vector<ShapeModel> models{ShapeModel::floppy, ShapeModel::shell, ShapeModel::surface_tension};
+    int packings = 2; // per model
+    double strain_step = 5e-9;
+    int strain_steps = 2;
+    double force_tolerance = 1e-10; // [k_v v0 sigma]
+
+    // The scene's defaults where they differ from the library's.
+    static Jam3dOptions scene_jam_defaults()
+    {
+        Jam3dOptions jam;
+        jam.mesh = "icosahedron";
+        jam.pressure_onset = 1e-5;
+        jam.pressure_max = 1e-2;
+        jam.pressures = 3;
+        jam.A0_floppy = 1.12;
+        return jam;
+    }
+};
+
+// Floppy particles need A0 above the mesh's own A^3D (A_min^3D, sec. 9.3.1). Checked before any packing is
+// jammed, so that the message names this scene's key (jam3d would name model_shape3d's A0, and only after
+// the other models' members of the ensemble had run).
+void check_A0_floppy(const ShearModulus3dOptions& options)
+{
+    const auto& models = options.models;
+    if (std::find(models.begin(), models.end(), ShapeModel::floppy) == models.end()) return;
+    const TriangleMesh mesh = mesh_from_name(options.jam.mesh);
+    const double A_min = mesh_shape_parameter3d(mesh, mesh_coordinates(mesh), 0);
+    if (options.jam.A0_floppy < A_min)
+        throw InputError("parameter 'A0_floppy' = '" + std::to_string(options.jam.A0_floppy) +
+                         "' is below the " + options.jam.mesh + "'s own shape parameter A_min^3D = " +
+                         std::to_string(A_min) + "; allowed: a real number >= it");
 }
 
-// Floppy particles need A0 above the mesh's own A^3D (A_min^3D, sec. 9.3.1). Checked here, before any
-// packing is jammed, so that the message names this scene's key (jam3d would name model_shape3d's A0, and
-// only after the other models' members of the ensemble had run).
-void check_A0_floppy(const Parameters& p)
+OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
 {
-    if (p.choice("model") != "floppy" && p.choice("model") != "all") return;
-    const TriangleMesh mesh = mesh_from_name(p.choice("mesh"));
-    const double A_min = mesh_shape_parameter3d(mesh, mesh_coordinates(mesh), 0);
-    if (p.real("A0_floppy") < A_min)
-        throw InputError("parameter 'A0_floppy' = '" + std::to_string(p.real("A0_floppy")) +
-                         "' is below the " + p.choice("mesh") + "'s own shape parameter A_min^3D = " +
-                         std::to_string(A_min) + "; allowed: a real number >= it");
+    const auto jam = [](auto field) { return path(&ShearModulus3dOptions::jam, field); };
+    using Models = std::vector<ShapeModel>;
+    OptionBinding<ShearModulus3dOptions> binding;
+    binding.choice(&ShearModulus3dOptions::models, "model",
+                   {{"floppy", Models{ShapeModel::floppy}},
+                    {"shell", Models{ShapeModel::shell}},
+                    {"surface_tension", Models{ShapeModel::surface_tension}},
+                    {"all", Models{ShapeModel::floppy, ShapeModel::shell, ShapeModel::surface_tension}}},
+                   "particle type of Table 9.1 in 3D (jam3d.hpp), or all three with the same seeds");
+    binding
+        .integer(jam(&Jam3dOptions::particles), "particles", "1",
+                 "particles N, half small, half large (even)")
+        .at_least(2);
+    binding.word(jam(&Jam3dOptions::mesh), "mesh", particle_mesh_names(),
+                 "surface mesh of every particle; icosahedron (12 vertices) by default: the "
+                 "paper's 42-vertex packings take minutes each to jam (decision "
+                 "dpm-3d-shear-modulus)");
+    binding
+        .integer(&ShearModulus3dOptions::packings, "packings", "1",
+                 "ensemble size per model (seeds seed, seed + 1, ...)")
+        .at_least(1);
+    binding
+        .real(jam(&Jam3dOptions::pressure_onset), "pressure_onset", "k_v v0", "P_t: jamming onset pressure")
+        .positive();
+    binding
+        .real(jam(&Jam3dOptions::pressure_max), "pressure_max", "k_v v0",
+              "largest pressure of the compression")
+        .positive();
+    binding
+        .integer(jam(&Jam3dOptions::pressures), "pressures", "1",
+                 "pressures log-spaced in (P_t, pressure_max]")
+        .at_least(1);
+    binding
+        .real(jam(&Jam3dOptions::A0_floppy), "A0_floppy", "1",
+              "floppy: preferred shape parameter A0^3D, above the mesh's own (icosahedron "
+              "1.098; 1.12 as Fig. 9.15b)")
+        .at_least(1.0);
+    binding.choice(jam(&Jam3dOptions::interaction), "contact",
+                   {{"rough", InteractionKind::rough}, {"smooth", InteractionKind::smooth}},
+                   "contacts between particles: rough = vertex spheres of diameter sigma (eqs. "
+                   "9.3-9.4), smooth = each vertex sphere against the faces of the other particle's "
+                   "mesh (decision dpm-3d-smooth-inclusion-exclusion)");
+    binding
+        .real(&ShearModulus3dOptions::strain_step, "strain_step", "1",
+              "Lees-Edwards simple shear step dgamma (sec. 9.4.3)")
+        .positive();
+    binding.integer(&ShearModulus3dOptions::strain_steps, "strain_steps", "1", "shear steps per pressure")
+        .at_least(1);
+    binding
+        .real(&ShearModulus3dOptions::force_tolerance, "force_tolerance", "k_v v0 sigma",
+              "largest force component allowed after each Newton minimisation (Newton stops "
+              "at round-off, usually far below)")
+        .positive();
+    binding.seed(jam(&Jam3dOptions::seed), "seed", "seed of the random placement of the first packing");
+    binding.check(check_A0_floppy);
+    binding.check([](const ShearModulus3dOptions& options) {
+        if (options.jam.pressure_max <= options.jam.pressure_onset)
+            throw InputError(
+                "pressure_max = " + std::to_string(options.jam.pressure_max) +
+                ": allowed a pressure above pressure_onset = " + std::to_string(options.jam.pressure_onset));
+    });
+    return binding;
 }
 
 // ParaView frames of one packing: at each pressure state (time value: its index, P_t first) the relaxed
@@ -74,92 +147,81 @@ void write_pressure_frames(const Jam3dResult& packing, const ModulusMember& meas
     }
 }
 
-} // namespace
-
-void run_shear_modulus3d(const Parameters& p, RunContext& context)
+// Every packing of every model: member i is packing i % packings of model i / packings; with --vtk, member
+// 0's packing, for the frames.
+struct ShearModulus3dResult
 {
-    check_A0_floppy(p);
-    const Jam3dOptions o = jam3d_options(p);
-    const std::string chosen = p.choice("model");
-    const std::vector<std::string> models = chosen == "all" ? model_names : std::vector<std::string>{chosen};
-    const int packings = static_cast<int>(p.integer("packings"));
-    context.record_seed(o.seed);
-    const double dgamma = p.real("strain_step");
-    const int steps = static_cast<int>(p.integer("strain_steps"));
-    const double tolerance = p.real("force_tolerance");
-
-    // Every (model, packing) pair is an independent member, run in parallel: packing k of every model starts
-    // from the same seed, seed + k (the same random centres and orientations). With --vtk, member 0 (the
-    // first packing of the first model, always on the first rank, which writes) keeps its packing for the
-    // frames, written once every member is done.
+    std::vector<ModulusMember> members;
     std::optional<Jam3dResult> drawn;
-    const std::vector<ModulusMember> all =
-        run_ensemble<ModulusMember>(packings * static_cast<int>(models.size()), [&](int i) {
-            Jam3dOptions mine = o;
-            mine.model = shape_model_from_name(models[i / packings]);
-            mine.seed = o.seed + static_cast<std::uint64_t>(i % packings);
-            const Jam3dResult r = jam3d(mine);
-            ModulusMember m = moduli_at_states(r.system, r.states, r.pressure_unit, dgamma, steps, tolerance);
-            m.fire_iterations = r.fire_iterations;
-            if (i == 0 && context.vtk()) drawn = r;
-            return m;
+};
+
+ShearModulus3dResult shear_modulus3d(const ShearModulus3dOptions& options, bool keep_drawn)
+{
+    // Every (model, packing) pair is an independent member, run in parallel: packing k of every model starts
+    // from the same seed, seed + k (the same random centres and orientations). Member 0 (the first packing of
+    // the first model, always on the first rank, which writes) keeps its packing for the frames.
+    const int packings = options.packings;
+    ShearModulus3dResult result;
+    result.members =
+        run_ensemble<ModulusMember>(packings * static_cast<int>(options.models.size()), [&](int i) {
+            Jam3dOptions member = options.jam;
+            member.model = options.models[static_cast<std::size_t>(i / packings)];
+            member.seed = options.jam.seed + static_cast<std::uint64_t>(i % packings);
+            const Jam3dResult packing = jam3d(member);
+            ModulusMember measured =
+                moduli_at_states(packing.system, packing.states, packing.pressure_unit, options.strain_step,
+                                 options.strain_steps, options.force_tolerance);
+            measured.fire_iterations = packing.fire_iterations;
+            if (i == 0 && keep_drawn) result.drawn = packing;
+            return measured;
         });
-    if (drawn) write_pressure_frames(*drawn, all.front(), *context.vtk());
-    auto& s = context.summary();
-    s["packings"] = packings;
-    s["particles"] = o.particles;
+    return result;
+}
+
+// Tables modulus_<model>.dat and mean_modulus_<model>.dat and the summary keys with suffix _<model>, per model.
+void report_shear_modulus3d(const ShearModulus3dOptions& options, const ShearModulus3dResult& result,
+                            RunContext& context)
+{
+    if (result.drawn) write_pressure_frames(*result.drawn, result.members.front(), *context.vtk());
+    auto& summary = context.summary();
+    summary["packings"] = options.packings;
+    summary["particles"] = options.jam.particles;
+    const auto packings = static_cast<std::size_t>(options.packings);
     long iterations = 0;
-    for (std::size_t k = 0; k < models.size(); ++k) {
-        const std::vector<ModulusMember> members(all.begin() + k * packings,
-                                                 all.begin() + (k + 1) * packings);
-        const EnsembleModulus e =
+    for (std::size_t k = 0; k < options.models.size(); ++k) {
+        const std::string model = shape_model_name(options.models[k]);
+        const std::vector<ModulusMember> members(result.members.begin() + k * packings,
+                                                 result.members.begin() + (k + 1) * packings);
+        const EnsembleModulus ensemble =
             report_ensemble(members,
-                            {"modulus_" + models[k] + ".dat", "mean_modulus_" + models[k] + ".dat", "k_v v0",
+                            {"modulus_" + model + ".dat", "mean_modulus_" + model + ".dat", "k_v v0",
                              "pressure Tr(Sigma)/3, eq. (9.26) in 3D"},
                             context);
-        iterations += e.fire_iterations;
-        write_modulus_summary(e, "_" + models[k], s);
+        iterations += ensemble.fire_iterations;
+        write_modulus_summary(ensemble, "_" + model, summary);
     }
     context.count_steps(iterations);
 }
 
-std::vector<ParameterSpec> shear_modulus3d_parameters()
+void run_shear_modulus3d(const ShearModulus3dOptions& options, RunContext& context)
 {
-    return {
-        ParameterSpec::choice(
-            "model", "all", {"floppy", "shell", "surface_tension", "all"},
-            "particle type of Table 9.1 in 3D (jam3d.hpp), or all three with the same seeds"),
-        ParameterSpec::integer("particles", 8, "1", "particles N, half small, half large (even)").at_least(2),
-        ParameterSpec::choice(
-            "mesh", "icosahedron",
-            {"tetrahedron", "octahedron", "icosahedron", "geodesic42", "geodesic162", "geodesic642"},
-            "surface mesh of every particle; icosahedron (12 vertices) by default: the "
-            "paper's 42-vertex packings take minutes each to jam (decision "
-            "dpm-3d-shear-modulus)"),
-        ParameterSpec::integer("packings", 2, "1", "ensemble size per model (seeds seed, seed + 1, ...)")
-            .at_least(1),
-        ParameterSpec::real("pressure_onset", 1e-5, "k_v v0", "P_t: jamming onset pressure").positive(),
-        ParameterSpec::real("pressure_max", 1e-2, "k_v v0", "largest pressure of the compression").positive(),
-        ParameterSpec::integer("pressures", 3, "1", "pressures log-spaced in (P_t, pressure_max]")
-            .at_least(1),
-        ParameterSpec::real("A0_floppy", 1.12, "1",
-                            "floppy: preferred shape parameter A0^3D, above the mesh's own (icosahedron "
-                            "1.098; 1.12 as Fig. 9.15b)")
-            .at_least(1.0),
-        ParameterSpec::choice(
-            "contact", "rough", {"rough", "smooth"},
-            "contacts between particles: rough = vertex spheres of diameter sigma (eqs. "
-            "9.3-9.4), smooth = each vertex sphere against the faces of the other particle's "
-            "mesh (decision dpm-3d-smooth-inclusion-exclusion)"),
-        ParameterSpec::real("strain_step", 5e-9, "1", "Lees-Edwards simple shear step dgamma (sec. 9.4.3)")
-            .positive(),
-        ParameterSpec::integer("strain_steps", 2, "1", "shear steps per pressure").at_least(1),
-        ParameterSpec::real("force_tolerance", 1e-10, "k_v v0 sigma",
-                            "largest force component allowed after each Newton minimisation (Newton stops "
-                            "at round-off, usually far below)")
-            .positive(),
-        ParameterSpec::seed("seed", 1, "seed of the random placement of the first packing"),
-    };
+    context.record_seed(options.jam.seed);
+    report_shear_modulus3d(options, shear_modulus3d(options, context.vtk() != nullptr), context);
+}
+
+} // namespace
+
+Scene shear_modulus3d_scene()
+{
+    return bound_scene("dpm.shear_modulus3d",
+                       "DPM sec. 9.4.3: shear modulus G of jammed 3D packings of floppy, shell and "
+                       "surface-tension particles from Lees-Edwards strain steps against pressure, fitted "
+                       "exponents of G ~ P^eta (Fig. 9.16b)",
+                       shear_modulus3d_binding(), run_shear_modulus3d)
+        .needing([](const Parameters& p) {
+            return packing3d_memory(static_cast<double>(p.integer("particles")), p.choice("mesh"), 1);
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm
