@@ -174,23 +174,23 @@ SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, Eigen::Index degree
         throw InputError("lowest_modes = " + std::to_string(lambda.size()) +
                          ": all of them are zero or negative modes (threshold " + std::to_string(threshold) +
                          "), so the zero-mode count is incomplete; allowed: a larger lowest_modes");
-    auto& s = context.summary();
-    s["zero_modes"] = counts.zero;
-    s["negative_modes"] = counts.negative;
-    s["zero_threshold_used"] = threshold;
-    s["lambda_lowest"] = lambda(0);
-    s["lambda_largest_zero"] =
+    auto& summary = context.summary();
+    summary["zero_modes"] = counts.zero;
+    summary["negative_modes"] = counts.negative;
+    summary["zero_threshold_used"] = threshold;
+    summary["lambda_lowest"] = lambda(0);
+    summary["lambda_largest_zero"] =
         counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
-    s["lambda_smallest_nonzero"] =
+    summary["lambda_smallest_nonzero"] =
         positive < lambda.size() ? nlohmann::json(lambda(positive)) : nlohmann::json(nullptr);
-    s["lambda_max"] = every_mode ? lambda(lambda.size() - 1) : largest;
-    s["modes_computed"] = lambda.size();
+    summary["lambda_max"] = every_mode ? lambda(lambda.size() - 1) : largest;
+    summary["modes_computed"] = lambda.size();
     if (!every_mode) return counts;
     // The median non-zero eigenvalue: a quadratic (shape or contact) mode whenever the soft band holds
     // fewer than half of the modes (Fig. 9.15d-f).
-    s["lambda_median_nonzero"] = positive < lambda.size()
-                                     ? nlohmann::json(lambda(positive + (lambda.size() - positive) / 2))
-                                     : nlohmann::json(nullptr);
+    summary["lambda_median_nonzero"] = positive < lambda.size()
+                                           ? nlohmann::json(lambda(positive + (lambda.size() - positive) / 2))
+                                           : nlohmann::json(nullptr);
     return counts;
 }
 
@@ -200,7 +200,7 @@ SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, Eigen::Index degree
 // dr = 0.1 and 0.2 over the soft modes, lambda~ below `soft` (quartic at large dr: 4). The soft modes cross
 // from quadratic to quartic at dr ~ sqrt(lambda~) <~ 1e-2 (U = lambda dr^2/2 + c dr^4 with c ~ 1); the
 // window lies a decade beyond (decision dpm-3d-quartic-window).
-void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult& j,
+void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult& packing,
                          const Eigen::VectorXd& lambda, const Eigen::MatrixXd& modes, int first_positive,
                          double soft, const std::vector<bool>& quartic, RunContext& context)
 {
@@ -211,10 +211,11 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
                             {"quartic", "1", "1 if Delta U(0.1 sigma) > 3 lambda dr^2/2 (quartic_modes)"},
                             {"dr", "v0^(1/3)", "amplitude Delta r along the unit eigenvector"},
                             {"dU", "k_v v0^2", "Delta U = U(x + dr e_k) - U(x)"}});
-    const double u0 = energy(j.x, nullptr, nullptr) / j.energy_unit;
+    const double u0 = energy(packing.x, nullptr, nullptr) / packing.energy_unit;
     const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(u0));
     const auto change = [&](Eigen::Index k, double dr) {
-        return energy_change_along(energy, j.x, modes.col(k), dr * j.length_unit) / j.energy_unit;
+        return energy_change_along(energy, packing.x, modes.col(k), dr * packing.length_unit) /
+               packing.energy_unit;
     };
     std::vector<double> small_exponents, large_exponents;
     for (Eigen::Index k = 0; k < lambda.size(); ++k) {
@@ -228,9 +229,9 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
         if (lambda(k) < soft)
             large_exponents.push_back(local_exponent(change(k, 0.1), change(k, 0.2), 0.1, 0.2, floor));
     }
-    auto& s = context.summary();
-    s["quadratic_mode_exponent"] = value_or_null(median_exponent(small_exponents));
-    s["soft_mode_exponent_large"] = value_or_null(median_exponent(large_exponents));
+    auto& summary = context.summary();
+    summary["quadratic_mode_exponent"] = value_or_null(median_exponent(small_exponents));
+    summary["soft_mode_exponent_large"] = value_or_null(median_exponent(large_exponents));
 }
 
 // The softest non-zero mode e of a packing (Fig. 9.15d-f, decision dpm-3d-surface-tension-slope): its shares
@@ -243,23 +244,24 @@ void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
                           const Eigen::VectorXd& eigenvalues, const Eigen::MatrixXd& modes,
                           int first_positive, RunContext& context)
 {
-    auto& s = context.summary();
+    auto& summary = context.summary();
     const char* keys[] = {"softest_mode_translation", "softest_mode_rotation", "softest_mode_deformation",
                           "softest_mode_shape_energy_fraction"};
     if (first_positive >= eigenvalues.size()) {
         for (const char* key : keys)
-            s[key] = nullptr;
+            summary[key] = nullptr;
         return;
     }
     const Eigen::VectorXd mode = modes.col(first_positive);
     const ModeParts parts = decompose_mode(system, x, mode);
     Eigen::MatrixXd shape_hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
-    for (const Particle3d& p : system.particles)
-        shape_energy3d(p.shape, system.meshes[p.mesh], x, p.first, nullptr, &shape_hessian);
-    s[keys[0]] = parts.translation;
-    s[keys[1]] = parts.rotation;
-    s[keys[2]] = parts.deformation;
-    s[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(first_positive);
+    for (const Particle3d& particle : system.particles)
+        shape_energy3d(particle.shape, system.meshes[particle.mesh], x, particle.first, nullptr,
+                       &shape_hessian);
+    summary[keys[0]] = parts.translation;
+    summary[keys[1]] = parts.rotation;
+    summary[keys[2]] = parts.deformation;
+    summary[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(first_positive);
 }
 
 // Where the zero modes beyond the 3 uniform translations live (nontrivial_zero_mode_parts), particle by
