@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -113,6 +114,26 @@ class OptionBinding
                                         std::move(meaning)),
                     [](const Parameters& p, const std::string& key) {
                         return static_cast<std::uint64_t>(p.integer(key));
+                    });
+    }
+
+    // A real a keyword may stand for (ParameterSpec::keyword_allowed: a value the run computes, e.g. A0 = min):
+    // the field holds the number, or nothing for the keyword, which is the default when the field's is nothing.
+    template <Field<Options, std::optional<double>> F>
+    ParameterSpec& real_or_keyword(F field, std::string name, std::string keyword, std::string unit,
+                                   std::string meaning)
+    {
+        const std::optional<double> fallback = default_of(field);
+        ParameterSpec spec =
+            ParameterSpec::real(std::move(name), fallback.value_or(0.0), std::move(unit), std::move(meaning));
+        if (fallback)
+            spec.keyword_allowed(std::move(keyword));
+        else
+            spec.keyword_by_default(std::move(keyword));
+        return bind(field, std::move(spec),
+                    [](const Parameters& p, const std::string& key) -> std::optional<double> {
+                        if (p.keyword(key)) return std::nullopt; // the one keyword the spec allows
+                        return p.real(key);
                     });
     }
 

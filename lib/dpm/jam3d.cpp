@@ -183,4 +183,10 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     return out;
 }
 
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int matrices)
+{
+    const double vertices = particles * mesh_from_name(mesh).vertex_count();
+    return dense_matrix_memory(3 * vertices, matrices, "3 x particles x mesh vertices");
+}
+
 } // namespace softgrain::dpm

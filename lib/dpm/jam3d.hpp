@@ -16,6 +16,7 @@
 #pragma once
 
 #include "core/fire.hpp"
+#include "core/resources.hpp"
 #include "dpm/single_particle3d.hpp"
 #include "dpm/system3d.hpp"
 
@@ -77,6 +78,10 @@ struct Jam3dResult
 };
 
 Jam3dResult jam3d(const Jam3dOptions& options);
+
+// A 3D packing of `particles` particles of the mesh named `mesh`, with `matrices` dense 3N x 3N matrices (the
+// Hessian of the Newton polish at P_t, and for a spectrum its eigenvectors).
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int matrices);
 
 // FIRE (core) on the total energy of a 3D system.
 FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options);

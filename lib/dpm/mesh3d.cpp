@@ -192,4 +192,9 @@ TriangleMesh mesh_from_name(const std::string& name)
                      "geodesic642 | geodesic2562");
 }
 
+std::vector<std::string> particle_mesh_names()
+{
+    return {"tetrahedron", "octahedron", "icosahedron", "geodesic42", "geodesic162", "geodesic642"};
+}
+
 } // namespace softgrain::dpm

@@ -54,4 +54,8 @@ TriangleMesh slab_mesh(int n, double spacing, double thickness);
 // "geodesic2562" (the mesh choice of dpm.shape3d); throws InputError otherwise.
 TriangleMesh mesh_from_name(const std::string& name);
 
+// The `mesh` choice of dpm.shape3d, dpm.modes3d and dpm.shear_modulus3d: every mesh_from_name knows but
+// geodesic2562.
+std::vector<std::string> particle_mesh_names();
+
 } // namespace softgrain::dpm

@@ -199,6 +199,14 @@ double local_exponent(double du1, double du2, double dr1, double dr2, double flo
     return std::log(du2 / du1) / std::log(dr2 / dr1);
 }
 
+std::optional<double> median_exponent(std::vector<double> exponents)
+{
+    std::erase_if(exponents, [](double exponent) { return std::isnan(exponent); });
+    if (exponents.empty()) return std::nullopt;
+    std::sort(exponents.begin(), exponents.end());
+    return exponents[exponents.size() / 2];
+}
+
 double participation_ratio(const Eigen::VectorXd& mode)
 {
     const Eigen::Index N = mode.size() / 2;

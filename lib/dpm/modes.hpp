@@ -14,6 +14,7 @@
 #include "dpm/system3d.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -168,5 +169,9 @@ double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, co
 // Local exponent d ln dU / d ln dr between two amplitudes (Figs. 9.14c, 9.15c); NaN where dU is not above
 // `floor` (round-off level).
 double local_exponent(double du1, double du2, double dr1, double dr2, double floor);
+
+// The median of the local exponents that are not NaN (the upper middle one of an even count), nothing when
+// every one is NaN: the summary's zero_mode_exponent and quadratic_mode_exponent (Figs. 9.14c, 9.15c).
+std::optional<double> median_exponent(std::vector<double> exponents);
 
 } // namespace softgrain::dpm

@@ -3,6 +3,8 @@
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 
+#include <stdexcept>
+
 namespace softgrain::dpm {
 
 namespace {
@@ -127,6 +129,19 @@ ShapeModel shape_model_from_name(const std::string& name)
     if (name == "shell") return ShapeModel::shell;
     if (name == "surface_tension") return ShapeModel::surface_tension;
     throw InputError("model = '" + name + "': allowed floppy | shell | surface_tension");
+}
+
+std::string shape_model_name(ShapeModel model)
+{
+    switch (model) {
+    case ShapeModel::floppy:
+        return "floppy";
+    case ShapeModel::shell:
+        return "shell";
+    case ShapeModel::surface_tension:
+        return "surface_tension";
+    }
+    throw std::logic_error("shape_model_name: not a ShapeModel");
 }
 
 ShapeParameters table_9_1_parameters(ShapeModel model, int n, double a0, double A0, const ShapeStiffness& k)

@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 
+#include <optional>
 #include <string>
 
 using namespace softgrain;
@@ -161,4 +162,29 @@ TEST_CASE("a library setup takes the scene's own defaults; nested fields bind th
     const Setup setup = binding.read(p);
     CHECK(setup.ring.eta == 3.5);
     CHECK(setup.particles == 40);
+}
+
+TEST_CASE("a real a keyword stands for: the number, or nothing for the keyword")
+{
+    struct Shape
+    {
+        std::optional<double> A0;        // nothing: the keyword `min` by default
+        std::optional<double> A1 = 1.04; // a number by default, `min` allowed
+    };
+    OptionBinding<Shape> binding;
+    binding.real_or_keyword(&Shape::A0, "A0", "min", "1", "preferred shape").at_least(1.0);
+    binding.real_or_keyword(&Shape::A1, "A1", "min", "1", "preferred shape").at_least(1.0);
+    CHECK(std::get<std::string>(spec_named(binding.specs(), "A0").default_value) == "min");
+    CHECK(std::get<double>(spec_named(binding.specs(), "A1").default_value) == 1.04);
+    Parameters p(binding.specs());
+    const Shape defaults = binding.read(p);
+    CHECK_FALSE(defaults.A0.has_value());
+    CHECK(defaults.A1 == 1.04);
+    p.set_from_text("A0", "1.2");
+    p.set_from_text("A1", "min");
+    const Shape given = binding.read(p);
+    CHECK(given.A0 == 1.2);
+    CHECK_FALSE(given.A1.has_value());
+    CHECK_THROWS_WITH_AS(p.set_from_text("A0", "max"), doctest::Contains("'A0'"), InputError);
+    CHECK_THROWS_WITH_AS(p.set_from_text("A0", "0.9"), doctest::Contains(">= 1"), InputError);
 }

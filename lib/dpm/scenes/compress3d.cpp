@@ -2,44 +2,45 @@
 // of eqs. (9.15)-(9.17), an elastic shell (eq. 9.2) or a spring-network ball; F~ = F_a (1 - nu^2)/(E D^2)
 // against delta~ = delta/D, and the exponents of F~ ~ delta~^alpha at small and large compression and while
 // the pole vertex alone touches the plate (decision dpm-compress3d-windows).
-#include "dpm/compress3d_scene.hpp"
+#include "dpm/scenes/scenes.hpp"
 
 #include "core/errors.hpp"
 #include "core/fits.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/compress3d.hpp"
-#include "dpm/scenes/scenes.hpp"
 #include "dpm/shape_energy3d.hpp"
 #include "dpm/spring_network.hpp"
 #include "dpm/vtk_frames.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace softgrain::dpm {
 
 namespace {
 
 // The exponent fitted to the samples with delta/D in [low, high] and F > 0.
-std::optional<double> exponent_in_window(const CompressionResult& r, double low, double high)
+std::optional<double> exponent_in_window(const CompressionResult& compression, double low, double high)
 {
     std::vector<double> delta, force;
-    for (const CompressionSample& s : r.samples)
-        if (s.delta_over_d >= low * (1 - 1e-12) && s.delta_over_d <= high * (1 + 1e-12) && s.force > 0) {
-            delta.push_back(s.delta_over_d);
-            force.push_back(s.force);
+    for (const CompressionSample& sample : compression.samples)
+        if (sample.delta_over_d >= low * (1 - 1e-12) && sample.delta_over_d <= high * (1 + 1e-12) &&
+            sample.force > 0) {
+            delta.push_back(sample.delta_over_d);
+            force.push_back(sample.force);
         }
     return fit_power_law_exponent(delta, force, minimum_exponent_points);
 }
 
 // The exponent fitted to the samples in which only the pole vertex touches the top plate.
-std::optional<double> pole_contact_exponent(const CompressionResult& r)
+std::optional<double> pole_contact_exponent(const CompressionResult& compression)
 {
     std::vector<double> delta, force;
-    for (const CompressionSample& s : r.samples)
-        if (s.top_contacts == 1) {
-            delta.push_back(s.delta_over_d);
-            force.push_back(s.force);
+    for (const CompressionSample& sample : compression.samples)
+        if (sample.top_contacts == 1) {
+            delta.push_back(sample.delta_over_d);
+            force.push_back(sample.force);
         }
     return fit_power_law_exponent(delta, force, minimum_exponent_points);
 }
@@ -132,25 +133,26 @@ OptionBinding<Compress3dOptions> compress3d_binding()
     return b;
 }
 
-void run_compress3d(const Compress3dOptions& options, RunContext& context)
+// ParaView frames, one per compression step, delta/D as the time value: the body (the surface mesh of the
+// tetrahedra or the shell, the network's nodes and springs) and the plates, with field data delta_over_D and
+// force.
+BodyObserver compression_frames(const Compress3dOptions& options, RunContext& context)
 {
-    const Compression3dOptions& o = options.compression;
+    const Compression3dOptions& compression = options.compression;
     const bool network = options.body == Compress3dBody::spring_network;
-    if (network) context.record_seed(o.seed);
-    // ParaView frames, one per compression step, delta/D as the time value: the body (the surface mesh of the
-    // tetrahedra or the shell, the network's nodes and springs) and the plates, with field data delta_over_D
-    // and force.
-    const TriangleMesh mesh = network ? TriangleMesh{} : compression_mesh(o.mesh);
-    const SpringNetwork net = network && context.vtk()
-                                  ? disordered_sphere_network(o.network_nodes, o.cutoff, o.network_k, o.seed)
-                                  : SpringNetwork{};
+    const TriangleMesh mesh = network ? TriangleMesh{} : compression_mesh(compression.mesh);
+    const SpringNetwork springs =
+        network ? disordered_sphere_network(compression.network_nodes, compression.cutoff,
+                                            compression.network_k, compression.seed)
+                : SpringNetwork{};
     // v0: the volume of the rest mesh (the shell's preferred volume, the tetrahedra's reference).
     const double v0 = network ? 1.0 : mesh_volume(mesh, mesh_coordinates(mesh), 0);
-    const BodyObserver frame = [&](const Eigen::VectorXd& x, double top, const CompressionSample& sample,
-                                   const Eigen::VectorXd& gradient) {
+    return [mesh, springs, v0, network, &context](const Eigen::VectorXd& x, double top,
+                                                  const CompressionSample& sample,
+                                                  const Eigen::VectorXd& gradient) {
         if (!context.vtk()->next()) return;
         vtk::PolyData body =
-            network ? spring_network_body(net, x)
+            network ? spring_network_body(springs, x)
                     : mesh_particles({{&mesh, 0, 1.0, v0, Eigen::Vector3d::Zero()}}, x, gradient);
         const Eigen::Matrix3Xd points = x.reshaped(3, x.size() / 3);
         const Eigen::Vector3d low = points.rowwise().minCoeff(), high = points.rowwise().maxCoeff();
@@ -163,15 +165,31 @@ void run_compress3d(const Compress3dOptions& options, RunContext& context)
         }
         context.vtk()->write(sample.delta_over_d, parts);
     };
-    const BodyObserver observe = context.vtk() ? frame : BodyObserver{};
-    const Compression3dResult r = options.body == Compress3dBody::tetrahedra
-                                      ? compress3d_tetrahedra(o, observe)
-                                  : options.body == Compress3dBody::shell ? compress3d_shell(o, observe)
-                                                                          : compress3d_network(o, observe);
-    const CompressionResult& c = r.compression;
-    context.count_steps(c.iterations);
+}
 
-    const double scale = (1 - r.nu * r.nu) / (r.E * c.diameter * c.diameter);
+// The body chosen, compressed between the plates (compress3d.hpp), each step handed to `observe`.
+Compression3dResult compress_body(const Compress3dOptions& options, const BodyObserver& observe)
+{
+    switch (options.body) {
+    case Compress3dBody::tetrahedra:
+        return compress3d_tetrahedra(options.compression, observe);
+    case Compress3dBody::shell:
+        return compress3d_shell(options.compression, observe);
+    case Compress3dBody::spring_network:
+        return compress3d_network(options.compression, observe);
+    }
+    throw std::logic_error("compress_body: not a Compress3dBody");
+}
+
+void report_compress3d(const Compress3dOptions& options, const Compression3dResult& result,
+                       RunContext& context)
+{
+    const CompressionResult& compression = result.compression;
+    const std::vector<CompressionSample>& samples = compression.samples;
+    context.count_steps(compression.iterations);
+
+    const double scale =
+        (1 - result.nu * result.nu) / (result.E * compression.diameter * compression.diameter);
     auto& table = context.table(
         "force.dat", {{"delta", "D", "compression delta~ = delta / D"},
                       {"F", "k_c sigma", "force F_a on the top plate"},
@@ -179,51 +197,76 @@ void run_compress3d(const Compress3dOptions& options, RunContext& context)
                       {"local_exponent", "1", "d ln F / d ln delta between this and the previous step"},
                       {"contacts", "1", "vertices touching the top plate"},
                       {"iterations", "1", "FIRE iterations of this step"}});
-    for (std::size_t k = 0; k < c.samples.size(); ++k) {
-        const CompressionSample& s = c.samples[k];
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const CompressionSample& sample = samples[k];
         double local = std::nan("");
-        if (k > 0 && s.force > 0 && c.samples[k - 1].force > 0)
-            local = std::log(s.force / c.samples[k - 1].force) /
-                    std::log(s.delta_over_d / c.samples[k - 1].delta_over_d);
-        table.row(
-            {s.delta_over_d, s.force, s.force * scale, local, double(s.top_contacts), double(s.iterations)});
+        if (k > 0 && sample.force > 0 && samples[k - 1].force > 0)
+            local = std::log(sample.force / samples[k - 1].force) /
+                    std::log(sample.delta_over_d / samples[k - 1].delta_over_d);
+        table.row({sample.delta_over_d, sample.force, sample.force * scale, local,
+                   double(sample.top_contacts), double(sample.iterations)});
     }
-    auto& s = context.summary();
-    s["diameter"] = c.diameter;
-    s["E"] = r.E;
-    s["nu"] = r.nu;
-    s["vertices"] = r.vertices;
-    s["small_strain_exponent"] =
-        value_or_null(exponent_in_window(c, o.schedule.delta_min, options.small_fit_max));
-    s["large_strain_exponent"] = value_or_null(exponent_in_window(c, options.fit_min, options.fit_max));
-    s["pole_contact_exponent"] = value_or_null(pole_contact_exponent(c));
-    s["small_strain_stiffness"] = c.samples.front().force * scale / c.samples.front().delta_over_d;
-    s["contacts_at_max"] = c.samples.back().top_contacts;
-    s["F_tilde_at_max"] = c.samples.back().force * scale;
+    auto& summary = context.summary();
+    summary["diameter"] = compression.diameter;
+    summary["E"] = result.E;
+    summary["nu"] = result.nu;
+    summary["vertices"] = result.vertices;
+    summary["small_strain_exponent"] = value_or_null(
+        exponent_in_window(compression, options.compression.schedule.delta_min, options.small_fit_max));
+    summary["large_strain_exponent"] =
+        value_or_null(exponent_in_window(compression, options.fit_min, options.fit_max));
+    summary["pole_contact_exponent"] = value_or_null(pole_contact_exponent(compression));
+    summary["small_strain_stiffness"] = samples.front().force * scale / samples.front().delta_over_d;
+    summary["contacts_at_max"] = samples.back().top_contacts;
+    summary["F_tilde_at_max"] = samples.back().force * scale;
     // The whole curve, for comparisons against stored references (reproductions/compare, compare-solid-*).
     std::vector<double> delta_tilde, force_tilde;
-    for (const CompressionSample& sample : c.samples) {
+    for (const CompressionSample& sample : samples) {
         delta_tilde.push_back(sample.delta_over_d);
         force_tilde.push_back(sample.force * scale);
     }
-    s["delta_tilde"] = delta_tilde;
-    s["F_tilde"] = force_tilde;
-    if (network) {
-        s["network_springs"] = r.springs;
-        s["coordination"] = 2.0 * r.springs / r.vertices;
+    summary["delta_tilde"] = delta_tilde;
+    summary["F_tilde"] = force_tilde;
+    if (options.body == Compress3dBody::spring_network) {
+        summary["network_springs"] = result.springs;
+        summary["coordination"] = 2.0 * result.springs / result.vertices;
     }
+}
+
+void run_compress3d(const Compress3dOptions& options, RunContext& context)
+{
+    if (options.body == Compress3dBody::spring_network) context.record_seed(options.compression.seed);
+    const BodyObserver observe = context.vtk() ? compression_frames(options, context) : BodyObserver{};
+    report_compress3d(options, compress_body(options, observe), context);
 }
 
 } // namespace
 
-void run_compress3d(const Parameters& p, RunContext& context)
+Scene compress3d_scene()
 {
-    run_compress3d(compress3d_binding().read(p), context);
-}
-
-std::vector<ParameterSpec> compress3d_parameters()
-{
-    return compress3d_binding().specs();
+    return bound_scene("dpm.compress3d",
+                       "DPM sec. 9.3.4: elastic tetrahedra (eqs. 9.15-9.17), an elastic shell or a "
+                       "spring-network ball "
+                       "compressed between two plates, F~ against delta/D and its exponents (Fig. 9.11)",
+                       compress3d_binding(), run_compress3d)
+        .advised_by({"compare",
+                     "compare-solid-work-precision",
+                     "method_index",
+                     {"tetrahedra", "spring_network"},
+                     "",
+                     "",
+                     "vertices",
+                     "surface vertices + 1 (tetrahedra) or nodes (network)",
+                     "fe_error_max",
+                     "largest |F~/F~_FE - 1| over 0.01 <= delta/D <= 0.2 against the finite-element "
+                     "ball of the same law and nu (data/compare/solid_fe.toml)"})
+        .needing([](const Parameters& p) {
+            // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
+            if (p.choice("model") != "spring_network") return MemoryEstimate{};
+            return dense_matrix_memory(3 * static_cast<double>(p.integer("network_nodes")), 1,
+                                       "3 x network_nodes");
+        })
+        .with_vtk();
 }
 
 } // namespace softgrain::dpm
