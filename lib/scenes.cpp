@@ -1,11 +1,11 @@
 // The catalogue of every scene softgrain knows: each method registers its own.
+#include "vsm/scenes/scenes.hpp"
 #include "compare/compare_scenes.hpp"
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"
 #include "sd/sd_scenes.hpp"
 #include "spd/spd_scenes.hpp"
-#include "vsm/vsm_scenes.hpp"
 
 namespace softgrain {
 
