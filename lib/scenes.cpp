@@ -4,7 +4,7 @@
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
 #include "dpm/dpm_scenes.hpp"
-#include "sd/sd_scenes.hpp"
+#include "sd/scenes/scenes.hpp"
 #include "spd/spd_scenes.hpp"
 
 namespace softgrain {
