@@ -3,9 +3,9 @@
 #include "core/core_scenes.hpp"
 #include "core/scene.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "sd/sd_scenes.hpp"
+#include "sd/scenes/scenes.hpp"
 #include "spd/scenes/scenes.hpp"
-#include "vsm/vsm_scenes.hpp"
+#include "vsm/scenes/scenes.hpp"
 
 namespace softgrain {
 

@@ -1,5 +1,6 @@
 #include "sd/approach_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace softgrain::sd {
@@ -74,6 +75,36 @@ ApproachAnalysis analyse_approach(const ApproachProblem& p, const std::vector<Ap
             std::max(out.lambda_error_max, std::abs(out.exponents.lambda2[k] - out.lambda2_exact[k]));
     }
     return out;
+}
+
+ApproachMaxima approach_maxima(const ApproachProblem& problem, const std::vector<ApproachSample>& samples,
+                               const ApproachAnalysis& analysis, double width_threshold)
+{
+    const double radius = problem.material.radius;
+    ApproachMaxima maxima;
+    double hertz_error = -1; // none yet
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const ApproachSample& sample = samples[k];
+        maxima.modes.push_back(jacobian_modes(problem, sample.t, sample.X, sample.h));
+        maxima.stiffness_max = std::max(maxima.stiffness_max, -maxima.modes.back().fast);
+        if (regime_width(Regime::hertz, radius, sample.h, sample.rates.delta) <= width_threshold)
+            hertz_error = std::max(hertz_error, analysis.h_error[k]);
+    }
+    maxima.force_balance_residual_max =
+        *std::max_element(analysis.force_balance_residual.begin(), analysis.force_balance_residual.end());
+    maxima.deflection_residual_max =
+        *std::max_element(analysis.deflection_residual.begin(), analysis.deflection_residual.end());
+    maxima.h_error_max = *std::max_element(analysis.h_error.begin(), analysis.h_error.end());
+    if (hertz_error >= 0) maxima.h_error_hertz = hertz_error;
+    return maxima;
+}
+
+double gap_rate_derivative_max(const ApproachProblem& problem)
+{
+    double rate_max = 0;
+    for (double h = problem.h0; h >= problem.h_min; h /= std::pow(10.0, 0.05))
+        rate_max = std::max(rate_max, std::abs(gap_rate_derivative(problem, h, 0.0)));
+    return rate_max;
 }
 
 } // namespace softgrain::sd

@@ -46,4 +46,23 @@ std::optional<GapRange> regime_range(const std::vector<ApproachSample>& samples,
 ApproachAnalysis analyse_approach(const ApproachProblem& problem, const std::vector<ApproachSample>& samples,
                                   double width_threshold);
 
+// The stiffness of eqs. (7), (9) along a simulated approach and the largest residuals and errors of its
+// analysis (sd.approach).
+struct ApproachMaxima
+{
+    std::vector<ModeRates> modes;          // jacobian_modes at each sample (approach.hpp)
+    double stiffness_max = 0;              // max over the samples of -modes.fast, at least 0
+    double force_balance_residual_max = 0; // of the analysis's per-sample values
+    double deflection_residual_max = 0;
+    double h_error_max = 0;
+    // The largest h_error over the samples in the Hertz regime (width at most width_threshold); empty if none.
+    std::optional<double> h_error_hertz;
+};
+ApproachMaxima approach_maxima(const ApproachProblem& problem, const std::vector<ApproachSample>& samples,
+                               const ApproachAnalysis& analysis, double width_threshold);
+
+// The fastest rate of the balanced dynamics along the path, max |d h-dot/dh| (gap_rate_derivative, at
+// t = 0) over h from h0 down to h_min in steps of 0.05 decades (1/s).
+double gap_rate_derivative_max(const ApproachProblem& problem);
+
 } // namespace softgrain::sd

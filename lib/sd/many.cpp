@@ -10,6 +10,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <memory>
+#include <numbers>
 
 namespace softgrain::sd {
 
@@ -140,6 +141,87 @@ std::vector<ManySample> integrate_many(const ManyParticleSystem& system, std::ve
         if (*std::min_element(y.begin() + positions.size(), y.end()) <= h_min) break;
     }
     return samples;
+}
+
+BalancedStart compressed_line(const Material& material, int particles, double force, double h0)
+{
+    BalancedStart start{{material, paper_contact_laws(material), 1, {}, {}}, {}, force, 0, 0};
+    start.deflection = balanced_deflection(start.system.laws, h0, force);
+    start.distance = 2.0 * material.radius + h0 - 2.0 * start.deflection; // eq. (2)
+    const long long n = particles;
+    for (long long i = 0; i < n; ++i)
+        start.positions.push_back(static_cast<double>(i) * start.distance);
+    for (long long i = 0; i + 1 < n; ++i)
+        start.system.bonds.push_back({static_cast<int>(i), static_cast<int>(i + 1)});
+    start.system.external = [n, force](double, std::vector<double>& external, std::vector<double>& rate) {
+        std::fill(external.begin(), external.end(), 0.0);
+        std::fill(rate.begin(), rate.end(), 0.0);
+        external.front() = force;
+        external[n - 1] = -force;
+    };
+    return start;
+}
+
+BalancedStart pushed_triangle(const Material& material, double force, double h0)
+{
+    BalancedStart start{
+        {material, paper_contact_laws(material), 2, {}, {}}, {}, force / std::sqrt(3.0), 0, 0};
+    start.deflection = balanced_deflection(start.system.laws, h0, start.pair_force);
+    start.distance = 2.0 * material.radius + h0 - 2.0 * start.deflection; // eq. (2)
+    const double radius = start.distance / std::sqrt(3.0);
+    for (int i = 0; i < 3; ++i) {
+        const double angle = std::numbers::pi / 2 + 2.0 * std::numbers::pi * i / 3.0;
+        start.positions.push_back(radius * std::cos(angle));
+        start.positions.push_back(radius * std::sin(angle));
+    }
+    start.system.bonds = {{0, 1}, {1, 2}, {2, 0}};
+    start.system.external = [force, initial = start.positions](double, std::vector<double>& external,
+                                                               std::vector<double>& rate) {
+        for (int i = 0; i < 3; ++i) { // toward the centre of the triangle (fixed direction)
+            const double norm = std::hypot(initial[2 * i], initial[2 * i + 1]);
+            external[2 * i] = -force * initial[2 * i] / norm;
+            external[2 * i + 1] = -force * initial[2 * i + 1] / norm;
+        }
+        std::fill(rate.begin(), rate.end(), 0.0);
+    };
+    return start;
+}
+
+ManyMaxima many_maxima(const std::vector<ManySample>& samples, int dimension, const ApproachProblem& pair,
+                       double pair_force)
+{
+    ManyMaxima maxima;
+    if (samples.empty()) return maxima;
+    const std::size_t bonds = samples.front().gaps.size();
+    std::vector<double> t_ref(bonds, 0.0), previous_h(bonds, pair.h0);
+    for (const ManySample& sample : samples) {
+        const std::vector<double>& velocity = sample.rates.velocity;
+        const long long n = static_cast<long long>(velocity.size()) / dimension;
+        const double v_scale =
+            *std::max_element(velocity.begin(), velocity.end(),
+                              [](double left, double right) { return std::abs(left) < std::abs(right); });
+        for (int c = 0; c < dimension; ++c) {
+            double mean = 0;
+            for (long long i = 0; i < n; ++i)
+                mean += velocity[i * dimension + c] / n;
+            if (v_scale != 0) maxima.mean_velocity = std::max(maxima.mean_velocity, std::abs(mean / v_scale));
+        }
+        const auto [low, high] = std::minmax_element(sample.gaps.begin(), sample.gaps.end());
+        maxima.symmetry_deviation = std::max(maxima.symmetry_deviation, (*high - *low) / *low);
+        // Every bond against the pair reference (the same for all bonds by symmetry or statics).
+        for (std::size_t bond = 0; bond < bonds; ++bond) {
+            const double h = sample.gaps[bond];
+            if (h < previous_h[bond]) t_ref[bond] += approach_time_reference(pair, previous_h[bond], h);
+            previous_h[bond] = h;
+            maxima.pair_reference_error =
+                std::max(maxima.pair_reference_error,
+                         std::abs(sample.rates.gap_rate[bond]) * std::abs(sample.t - t_ref[bond]) / h);
+            maxima.pair_force_residual = std::max(maxima.pair_force_residual,
+                                                  std::abs(sample.rates.pair_force[bond] / pair_force - 1.0));
+        }
+        maxima.linear_system_residual = std::max(maxima.linear_system_residual, sample.rates.residual);
+    }
+    return maxima;
 }
 
 } // namespace softgrain::sd

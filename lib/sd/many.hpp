@@ -15,6 +15,7 @@
 // h-dot_ij = -(F_ij - F_adh_ij)/zeta_ij.
 #pragma once
 
+#include "sd/approach.hpp"
 #include "sd/contact_laws.hpp"
 
 #include <functional>
@@ -58,5 +59,38 @@ struct ManySample
 std::vector<ManySample> integrate_many(const ManyParticleSystem& system, std::vector<double> positions,
                                        std::vector<double> gaps, const std::vector<double>& output_times,
                                        double h_min, double tolerance, double delta_scale, long& steps);
+
+// A system at rest in its balanced configuration, every gap h0: centre distances 2R + h0 - 2 delta0 (eq. 2),
+// delta0 balancing the force every bond carries at h0 (eq. 1).
+struct BalancedStart
+{
+    ManyParticleSystem system;
+    std::vector<double> positions; // flat dimension * N (m)
+    double pair_force = 0;         // the force every bond carries (N)
+    double deflection = 0;         // delta0 (m)
+    double distance = 0;           // |X_ij| (m)
+};
+
+// A line of `particles` bonded neighbours compressed at its ends by `force`: every bond carries `force`.
+BalancedStart compressed_line(const Material& material, int particles, double force, double h0);
+
+// An equilateral triangle of three particles, each pushed towards the centre by `force` (a fixed direction):
+// every bond carries force / sqrt 3 (two bonds at 30 degrees from the inward radius of each particle).
+BalancedStart pushed_triangle(const Material& material, double force, double h0);
+
+// How far a run stays from what note [20] and the pair dynamics predict, as maxima over its samples.
+struct ManyMaxima
+{
+    double mean_velocity = 0;      // |mean_i V_i| / max_i |V_i| per component: the mean velocity stays zero
+    double symmetry_deviation = 0; // (h_max - h_min) / h_min over the bonds: the load is shared alike
+    // |h-dot| |t - t_ref(h)| / h per bond: the relative error of h(t) against the pair reference, the same
+    // bond alone under the force it carries, t_ref by quadrature (eq. 7 with eq. 1).
+    double pair_reference_error = 0;
+    double pair_force_residual = 0;    // |F_ij / pair_force - 1|: the bonds carry the statics' force
+    double linear_system_residual = 0; // ManyParticleRates::residual
+};
+// `pair`: the bond alone from h0 under constant loading by pair_force.
+ManyMaxima many_maxima(const std::vector<ManySample>& samples, int dimension, const ApproachProblem& pair,
+                       double pair_force);
 
 } // namespace softgrain::sd

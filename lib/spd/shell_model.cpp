@@ -10,7 +10,6 @@
 #include <cmath>
 #include <exception>
 #include <numbers>
-#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -26,14 +25,12 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
     x_.conservativeResize(2 * (n0 + n));
     v_.conservativeResize(2 * (n0 + n));
     f_.conservativeResize(2 * (n0 + n));
-    contact_force_.conservativeResize(2 * (n0 + n));
     applied_.conservativeResize(2 * (n0 + n));
     inverse_mass_.conservativeResize(2 * (n0 + n));
     for (int k = 0; k < n; ++k) {
         x_.segment<2>(2 * (n0 + k)) = vertices.col(k);
         v_.segment<2>(2 * (n0 + k)).setZero();
         f_.segment<2>(2 * (n0 + k)).setZero();
-        contact_force_.segment<2>(2 * (n0 + k)).setZero();
         applied_.segment<2>(2 * (n0 + k)).setZero();
         inverse_mass_.segment<2>(2 * (n0 + k)).setConstant(shell.rigid ? 0.0 : 1.0 / vertex_mass);
     }
@@ -43,11 +40,10 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
     edge_rotation_.resize(n0 + n, 0.0);
     axial_.resize(n0 + n, 0.0);
     torque_.resize(n0 + n, 0.0);
-    contact_normal_.resize(n0 + n, 0.0);
     shell_of_.resize(n0 + n, static_cast<int>(shells_.size()));
-    neighbours_.reset(); // the vertex set changed: a new contact list
+    contacts_.add_vertices(n);
     for (int k = 0; k < shell.elements(); ++k) {
-        edge_[n0 + k] = vertex(next(shell, k)) - vertex(n0 + k);
+        edge_[n0 + k] = vertex(next_vertex(shell, k)) - vertex(n0 + k);
         length_prev_[n0 + k] = edge_[n0 + k].norm();
     }
     shells_.push_back(shell);
@@ -109,7 +105,7 @@ void ShellModel::internal_forces(const Shell& s)
     double *edge_squared = edge_squared_.data(), *edge_rotation = edge_rotation_.data();
     const ShellLaws laws = s.laws;
     for (int k = 0; k < s.elements(); ++k) {
-        const int i = s.first + k, j = next(s, k);
+        const int i = s.first + k, j = next_vertex(s, k);
         const Vec2 e(x[2 * j] - x[2 * i], x[2 * j + 1] - x[2 * i + 1]);
         edge_rotation[i] = element_rotation(edge[i], e);
         edge[i] = e;
@@ -125,7 +121,7 @@ void ShellModel::internal_forces(const Shell& s)
     }
     for (int k = 0; k < s.count; ++k) {
         if (!s.has_hinge(k)) continue;
-        const int i = s.first + k, a = prev(s, k), b = next(s, k);
+        const int i = s.first + k, a = previous_vertex(s, k), b = next_vertex(s, k);
         const double dtheta = edge_rotation[i] - edge_rotation[a];
         const double M = elastoplastic_update(torque_[i], laws.k_b * dtheta, laws.M_Y);
         torque_[i] = M;
@@ -175,284 +171,6 @@ Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const
     return g;
 }
 
-// Contact candidates (decision spd-contact-detection): a vertex c within r_i + r_j of an element AB of length
-// l is within sqrt((r_i + r_j)^2 + (l/2)^2) of A or B. A Verlet list of all vertices
-// (core/neighbour_list.hpp: cell list with a skin) with that cutoff, l bounded by L + skin (L the longest
-// deformable element at the build, each end moving less than skin/2 before the next one), therefore lists a
-// vertex of every element it can touch; its candidates are the elements adjacent to its listed neighbours of
-// other shells. Rigid shells (walls) have long elements: every free vertex is a candidate of every rigid
-// element (O(N) per wall). The candidates are rebuilt with the list only, O(N) at fixed density; friction
-// histories carry over.
-void ShellModel::update_contact_candidates()
-{
-    double r_all = 0, r_free = 0;
-    for (const Shell& s : shells_) {
-        r_all = std::max(r_all, s.radius);
-        if (!s.rigid) r_free = std::max(r_free, s.radius);
-    }
-    const double reach = r_all + r_free;
-    const auto longest_element = [&] {
-        double L = 0;
-        for (const Shell& s : shells_)
-            if (!s.rigid)
-                for (int k = 0; k < s.elements(); ++k)
-                    L = std::max(L, (vertex(next(s, k)) - vertex(s.first + k)).norm());
-        return L;
-    };
-    const Eigen::Map<const Points<2>> positions(x_.data(), 2, vertices());
-    const auto make_list = [&](double L) {
-        list_length_ = 1.25 * L; // headroom: element growth up to 25% keeps the list
-        const double skin = std::max(reach, 0.5 * list_length_);
-        const double l_bound = list_length_ + skin;
-        neighbours_.emplace(std::sqrt(reach * reach + 0.25 * l_bound * l_bound), skin);
-    };
-    // Called when the list is stale (forces_in_region found a vertex beyond half the skin, or there is none).
-    if (!neighbours_)
-        make_list(longest_element());
-    else if (const double L = longest_element(); L > list_length_) // an element outgrew the cutoff's bound
-        make_list(L);
-    neighbours_->build(positions);
-    ++list_builds_;
-
-    std::vector<Candidate> fresh;
-    const auto add = [&](int i, int a, int b) {
-        fresh.push_back({i, a, b, shells_[shell_of(i)].radius + shells_[shell_of(a)].radius});
-    };
-    const auto add_adjacent_elements = [&](int i, int j) { // elements of shell_of(j) that end at j
-        const Shell& s = shells_[shell_of(j)];
-        const int local = j - s.first;
-        if (local < s.elements()) add(i, j, next(s, local));
-        if (s.closed || local > 0) add(i, prev(s, local), j);
-    };
-    // Each vertex's list neighbours (compressed rows), so that the candidates are made vertex by vertex and
-    // only each vertex's few need sorting by element: the order (vertex, a) of the friction carry-over and
-    // of the gather.
-    const int n = vertices();
-    std::vector<int> row(n + 1, 0);
-    for (const auto& [i, j] : neighbours_->pairs()) {
-        ++row[i + 1];
-        ++row[j + 1];
-    }
-    std::partial_sum(row.begin(), row.end(), row.begin());
-    std::vector<int> neighbour(row.back()), fill(row.begin(), row.end() - 1);
-    for (const auto& [i, j] : neighbours_->pairs()) {
-        neighbour[fill[i]++] = j;
-        neighbour[fill[j]++] = i;
-    }
-    // Walls have few, long elements that a vertex list does not see: each free vertex is paired with the wall
-    // elements within reach + skin (neither moves more than skin/2 before the next rebuild).
-    const double wall_reach = reach + neighbours_->skin();
-    std::vector<const Shell*> walls;
-    for (const Shell& s : shells_)
-        if (s.rigid) walls.push_back(&s);
-    const auto by_element = [](const Candidate& u, const Candidate& w) { return u.a < w.a; };
-    const auto same_element = [](const Candidate& u, const Candidate& w) { return u.a == w.a; };
-    for (int i = 0; i < n; ++i) {
-        const auto begin = static_cast<std::ptrdiff_t>(fresh.size());
-        for (int k = row[i]; k < row[i + 1]; ++k) {
-            const int j = neighbour[k];
-            if (shell_of(i) != shell_of(j) && !shells_[shell_of(j)].rigid) add_adjacent_elements(i, j);
-        }
-        if (!shells_[shell_of(i)].rigid)
-            for (const Shell* wall : walls)
-                for (int k = 0; k < wall->elements(); ++k) {
-                    const int a = wall->first + k, b = next(*wall, k);
-                    if (point_segment_proximity(vertex(i), vertex(a), vertex(b)).distance < wall_reach)
-                        add(i, a, b);
-                }
-        std::sort(fresh.begin() + begin, fresh.end(), by_element);
-        fresh.erase(std::unique(fresh.begin() + begin, fresh.end(), same_element), fresh.end());
-    }
-    const auto key = [](const Candidate& c) { return std::make_pair(c.vertex, c.a); };
-    // Both lists are sorted: carry the friction history of pairs that stay candidates.
-    auto old = candidates_.begin();
-    for (Candidate& c : fresh) {
-        while (old != candidates_.end() && key(*old) < key(c))
-            ++old;
-        if (old != candidates_.end() && key(*old) == key(c)) c.friction = old->friction;
-    }
-    candidates_.swap(fresh);
-    index_candidates();
-}
-
-// The two indexes of the candidates: the contact groups (runs of one vertex against one other shell), and
-// per vertex the candidates acting on it in candidate order (a counting sort by vertex, stable in m).
-void ShellModel::index_candidates()
-{
-    contact_groups_.clear();
-    for (std::size_t m = 0; m < candidates_.size(); ++m)
-        if (m == 0 || candidates_[m].vertex != candidates_[m - 1].vertex ||
-            shell_of(candidates_[m].a) != shell_of(candidates_[m - 1].a))
-            contact_groups_.push_back(m);
-    contact_groups_.push_back(candidates_.size());
-
-    if (candidates_.size() >= (std::size_t{1} << 30))
-        throw NumericalError("contact candidates", steps_,
-                             std::to_string(candidates_.size()) + " candidates, above the 2^30 of the index");
-    touched_.assign(vertices(), 0);
-    gather_offsets_.assign(vertices() + 1, 0);
-    for (const Candidate& c : candidates_)
-        for (const int i : {c.vertex, c.a, c.b})
-            ++gather_offsets_[i + 1];
-    std::partial_sum(gather_offsets_.begin(), gather_offsets_.end(), gather_offsets_.begin());
-    gather_terms_.resize(gather_offsets_.back());
-    std::vector<std::size_t> fill(gather_offsets_.begin(), gather_offsets_.end() - 1);
-    for (std::size_t m = 0; m < candidates_.size(); ++m) {
-        const Candidate& c = candidates_[m];
-        const auto term = static_cast<std::uint32_t>(m << 2);
-        gather_terms_[fill[c.vertex]++] = term | role_vertex;
-        gather_terms_[fill[c.a]++] = term | role_end_a;
-        gather_terms_[fill[c.b]++] = term | role_end_b;
-    }
-}
-
-// The cheap rejection before the exact distance: the vertex lies outside the bounding box of the
-// sphero-segment (the case of nearly all candidates at a step).
-inline bool ShellModel::outside_bounding_box(const Candidate& cand) const
-{
-    const double reach = cand.reach;
-    const Vec2 c = vertex(cand.vertex), A = vertex(cand.a), B = vertex(cand.b);
-    return c.x() < std::min(A.x(), B.x()) - reach || c.x() > std::max(A.x(), B.x()) + reach ||
-           c.y() < std::min(A.y(), B.y()) - reach || c.y() > std::max(A.y(), B.y()) + reach;
-}
-
-// Section 2.3: one vertex against one element of another shell (a sphero-segment), written into the
-// candidate's record. A contact with an element end (branches a < 0, a > l of Fig. 4) is a vertex-vertex
-// contact; it is counted once, with the element that starts at that end (or, for the last vertex of an open
-// shell, that ends there). Called for a candidate inside the bounding box, its record reset; old_friction is
-// its tangential force of the previous step.
-void ShellModel::evaluate_contact(Candidate& cand, double old_friction, double dt) const
-{
-    const int i = cand.vertex, a = cand.a, b = cand.b;
-    const Shell& sq = shells_[shell_of(a)];
-    const double reach = cand.reach;
-    const Vec2 c = vertex(i), A = vertex(a), B = vertex(b);
-    const SegmentProximity prox = point_segment_proximity(c, A, B);
-    if (prox.distance >= reach) return;
-    // The sphero-segment law holds while the vertex centre stays on its side of the element: at distance
-    // 0 the normal flips and the vertex tunnels through (a wall cannot hold it).
-    if (prox.distance < 0.05 * reach) {
-        cand.overlap = true;
-        return;
-    }
-    const bool last_end = !sq.closed && b == sq.first + sq.count - 1;
-    if (prox.branch == SegmentBranch::end_b && !last_end) return; // counted with the next element
-    const auto w = transfer_weights(std::clamp(prox.a, 0.0, prox.length), prox.length);
-    const Vec2 v_rel = v_.segment<2>(2 * i) - w[0] * v_.segment<2>(2 * a) - w[1] * v_.segment<2>(2 * b);
-    const double fn = std::max(0.0, normal_contact_force(contact_.k_n, prox.distance, reach) -
-                                        contact_.normal_damping * v_rel.dot(prox.normal));
-    Vec2 F = fn * prox.normal;
-    if (contact_.mu > 0) {
-        const Vec2 t(prox.normal.y(), -prox.normal.x()); // t = n x z (section 2.3)
-        cand.friction =
-            coulomb_friction_update(old_friction, contact_.k_t, v_rel.dot(t) * dt, contact_.mu, fn);
-        F += cand.friction * t;
-    }
-    cand.active = true;
-    cand.distance = prox.distance;
-    cand.fn = fn;
-    cand.w_a = w[0];
-    cand.w_b = w[1];
-    cand.force = F;
-}
-
-std::vector<ShellModel::ContactView> ShellModel::active_contacts() const
-{
-    std::vector<ContactView> out;
-    for (const Candidate& cand : candidates_)
-        if (cand.active)
-            out.push_back(
-                {cand.vertex, cand.a, cand.b,
-                 point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).closest,
-                 cand.fn, cand.friction, cand.force});
-    return out;
-}
-
-// One contact per (vertex, other shell): the nearest of its touching elements (decision
-// spd-contact-nearest-element). At a concave corner of the other shell a vertex lies within reach of both
-// adjacent elements and projects inside both; counting both doubles the force there, and the second term
-// vanishes abruptly when the projection leaves its element: a jump of the contact energy that injects
-// energy into a vertex sliding across the corner. The distance to the nearest element is continuous, so is
-// the energy. The group [begin, end) holds the candidates of one vertex against the elements of one other
-// shell. A friction history dropped here restarts at zero (the scenes of section 5 are frictionless).
-// Returns whether a candidate of the group overlaps beyond 95% (exit 3, throw_overlap).
-bool ShellModel::evaluate_contact_group(std::size_t begin, std::size_t end, double dt)
-{
-    std::size_t nearest = end;
-    bool overlap = false;
-    for (std::size_t k = begin; k < end; ++k) {
-        Candidate& cand = candidates_[k];
-        const double old_friction = cand.friction;
-        cand.friction = 0; // a contact that opened loses its history
-        cand.active = cand.overlap = false;
-        if (outside_bounding_box(cand)) continue;
-        evaluate_contact(cand, old_friction, dt);
-        overlap = overlap || cand.overlap;
-        if (cand.active && (nearest == end || cand.distance < candidates_[nearest].distance)) nearest = k;
-    }
-    for (std::size_t k = begin; k < end; ++k)
-        if (k != nearest && candidates_[k].active) {
-            candidates_[k].active = false;
-            candidates_[k].friction = 0;
-        }
-    if (nearest != end) {
-        const Candidate& cand = candidates_[nearest];
-        for (const int i : {cand.vertex, cand.a, cand.b})
-#pragma omp atomic write
-            touched_[i] = 1;
-    }
-    return overlap;
-}
-
-// The contact force on vertex i (its own contacts, and the reactions on it as an element end) and the
-// normal force it receives as the contacting vertex, summed in candidate order: the order of a serial loop
-// over the candidates, whatever the number of threads, so the forces do not depend on it, bit for bit.
-// Added to the vertex's force.
-void ShellModel::gather_contact_force(int i)
-{
-    Vec2 F = Vec2::Zero();
-    double fn = 0;
-    if (touched_[i])
-        for (std::size_t t = gather_offsets_[i]; t < gather_offsets_[i + 1]; ++t) {
-            const std::uint32_t term = gather_terms_[t];
-            const Candidate& cand = candidates_[term >> 2];
-            if (!cand.active) continue;
-            switch (term & 3u) {
-            case role_vertex:
-                F += cand.force;
-                fn += cand.fn;
-                break;
-            case role_end_a:
-                F -= cand.w_a * cand.force;
-                break;
-            default:
-                F -= cand.w_b * cand.force;
-                break;
-            }
-        }
-    touched_[i] = 0;
-    contact_force_.segment<2>(2 * i) = F;
-    contact_normal_[i] = fn;
-    add_force(i, F);
-}
-
-void ShellModel::throw_overlap() const
-{
-    for (const Candidate& cand : candidates_) {
-        if (!cand.overlap) continue;
-        const double reach = shells_[shell_of(cand.vertex)].radius + shells_[shell_of(cand.a)].radius;
-        const double distance =
-            point_segment_proximity(vertex(cand.vertex), vertex(cand.a), vertex(cand.b)).distance;
-        std::ostringstream cause;
-        cause << "contact overlap " << reach - distance << " m above 95% of r_i + r_j = " << reach
-              << " m (vertex " << cand.vertex << " of particle " << shell_of(cand.vertex)
-              << "): the load per contact vertex exceeds what k_n = " << contact_.k_n
-              << " N/m can hold before the vertex crosses the element; use more nodes (more contact "
-                 "vertices share the load) or a stiffer contact";
-        throw NumericalError("contact overlap", steps_, cause.str());
-    }
-}
-
 namespace {
 // Runs `task` on one thread of a parallel region; an exception cannot leave the region, so it is kept in
 // `failure` and rethrown by the caller after the region.
@@ -483,9 +201,9 @@ void raise_flag(bool& flag)
 template <class BeforeVertex, class AfterVertex>
 void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& before, AfterVertex&& after)
 {
-    const bool contacts = contact_.k_n > 0;
+    const bool contacts = contacts_.enabled();
     const int n = vertices();
-    bool stale = contacts && !neighbours_; // this thread's share of flags.list_stale
+    bool stale = contacts && !contacts_.listed(); // this thread's share of flags.list_stale
 #pragma omp for schedule(static) nowait
     for (int i = 0; i < n; ++i) {
         before(i);
@@ -493,17 +211,16 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     }
     // The same static schedule: each thread checks the vertices it has just moved (no barrier needed).
     if (contacts && !stale) {
-        const NeighbourList<2>& list = *neighbours_;
 #pragma omp for schedule(static) nowait
         for (int i = 0; i < n; ++i)
-            if (list.moved_beyond_half_skin(i, vertex(i))) stale = true;
+            if (contacts_.moved_beyond_half_skin(i, vertex(i))) stale = true;
     }
     if (stale) raise_flag(flags.list_stale);
 #pragma omp barrier
-    if (flags.list_stale) on_one_thread(flags.failure, [&] { update_contact_candidates(); });
+    if (flags.list_stale) on_one_thread(flags.failure, [&] { contacts_.update_candidates(view(), steps_); });
     if (flags.failure) return; // every thread sees it after the barrier of the single construct
     const int n_shells = static_cast<int>(shells_.size());
-    const long n_groups = contacts ? static_cast<long>(contact_groups_.size()) - 1 : 0;
+    const long n_groups = contacts ? contacts_.groups() : 0;
 #pragma omp for schedule(dynamic, 4) nowait
     for (int p = 0; p < n_shells; ++p) {
         const Shell& s = shells_[p];
@@ -514,18 +231,16 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     bool overlap = false;
 #pragma omp for schedule(static)
     for (long g = 0; g < n_groups; ++g)
-        overlap = evaluate_contact_group(contact_groups_[g], contact_groups_[g + 1], dt) || overlap;
+        overlap = contacts_.evaluate_group(view(), g, dt) || overlap;
     if (overlap) raise_flag(flags.overlap); // acted on after the region
-    if (!links_.empty()) on_one_thread(flags.failure, [&] { add_link_forces(); });
+    if (!links_.empty()) on_one_thread(flags.failure, [&] { links_.add_forces(view(), f_); });
     if (flags.failure) return;
 #pragma omp for schedule(static) nowait // the region ends next, or its owner goes on with the same vertices
     for (int i = 0; i < n; ++i) {
-        if (contacts) {
-            gather_contact_force(i);
-        } else {
-            contact_force_.segment<2>(2 * i).setZero();
-            contact_normal_[i] = 0;
-        }
+        if (contacts)
+            add_force(i, contacts_.gather(i));
+        else
+            contacts_.clear(i);
         after(i);
     }
 }
@@ -539,45 +254,6 @@ void ShellModel::compute_forces(double dt)
     throw_region_failure(flags, dt);
 }
 
-// Section 6: the intact links, in their fixed order (forces independent of the thread count). A link is
-// tested against eq. (39) with the forces of the current geometry; at zeta >= 0 it breaks before acting, and
-// the pair is left to the contact law (eqs. (6)-(7), decision spd-tissue-link-breaking).
-void ShellModel::add_link_forces()
-{
-    for (CohesiveLink& link : links_) {
-        if (link.broken) continue;
-        const LinkKinematics k = link_kinematics(link, vertex(link.a), vertex(link.b), vertex(link.partner_a),
-                                                 vertex(link.partner_b));
-        const LinkForces F = link_forces(link, link_law_, k);
-        link.f_n = F.f_n;
-        link.f_t = F.f_t;
-        if (yield_function(F.f_n, F.f_t, link_law_) >= 0) {
-            link.broken = true;
-            continue;
-        }
-        add_force(link.a, F.a);
-        add_force(link.b, F.b);
-        add_force(link.partner_a, F.partner_a);
-        add_force(link.partner_b, F.partner_b);
-    }
-}
-
-int ShellModel::broken_links() const
-{
-    return static_cast<int>(
-        std::count_if(links_.begin(), links_.end(), [](const CohesiveLink& l) { return l.broken; }));
-}
-
-double ShellModel::link_energy() const
-{
-    double W = 0;
-    for (const CohesiveLink& link : links_)
-        if (!link.broken)
-            W += spd::link_energy<double>(link, link_law_, vertex(link.a), vertex(link.b),
-                                          vertex(link.partner_a), vertex(link.partner_b));
-    return W;
-}
-
 void ShellModel::step(double dt, double damping)
 {
     if (steps_ == 0) compute_forces(dt);
@@ -586,7 +262,7 @@ void ShellModel::step(double dt, double damping)
     // Only a vertex faster than r_min/dt (r_min the smallest contact radius of the free shells) can have
     // moved farther than its own radius: the cheap first test of step_too_long.
     double r_min = INFINITY;
-    if (contact_.k_n > 0)
+    if (contacts_.enabled())
         for (const Shell& s : shells_)
             if (!s.rigid && s.radius > 0) r_min = std::min(r_min, s.radius);
     const double speed_squared_limit = r_min * r_min / (dt * dt);
@@ -647,7 +323,7 @@ void ShellModel::step(double dt, double damping)
 void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
 {
     if (flags.failure) std::rethrow_exception(flags.failure);
-    if (flags.overlap) throw_overlap();
+    if (flags.overlap) contacts_.throw_overlap(view(), steps_);
     if (flags.non_finite) {
         int bad = 0; // the first vertex with a non-finite position or velocity
         while (vertex_finite(bad))
@@ -751,8 +427,8 @@ double ShellModel::min_vertex_mass() const
 
 double ShellModel::critical_time_step() const
 {
-    double k_max = contact_.k_n;
-    if (!links_.empty()) k_max = std::max({k_max, link_law_.k_n, link_law_.k_t});
+    double k_max = contacts_.law().k_n;
+    if (!links_.empty()) k_max = std::max({k_max, links_.law().k_n, links_.law().k_t});
     for (std::size_t p = 0; p < shells_.size(); ++p) {
         const Shell& s = shells_[p];
         if (s.rigid) continue;
@@ -780,8 +456,9 @@ double damped_oscillator_limit(double omega2, double gamma)
 double ShellModel::stable_time_step() const
 {
     double limit = critical_time_step();
-    if (contact_.k_n > 0) {
-        const double m = min_vertex_mass(), omega2 = contact_.k_n / m, gamma = contact_.normal_damping / m;
+    if (contacts_.enabled()) {
+        const ContactLaw& contact = contacts_.law();
+        const double m = min_vertex_mass(), omega2 = contact.k_n / m, gamma = contact.normal_damping / m;
         limit = std::min(limit, damped_oscillator_limit(omega2, gamma)); // a vertex on a wall
         const auto free_shells =
             std::count_if(shells_.begin(), shells_.end(), [](const Shell& s) { return !s.rigid; });
@@ -885,15 +562,6 @@ std::string ShellModel::describe_vertex(int i) const
     return "vertex " + std::to_string(i) + " of particle " + std::to_string(shell_of(i));
 }
 
-Vec2 ShellModel::contact_force_on(int shell) const
-{
-    const Shell& s = shells_[shell];
-    Vec2 F = Vec2::Zero();
-    for (int i = s.first; i < s.first + s.count; ++i)
-        F += contact_force_.segment<2>(2 * i);
-    return F;
-}
-
 MemoryEstimate shell_model_memory(double vertices, const std::string& what)
 {
     return per_item_memory(vertices, 530.0, what);
@@ -903,50 +571,25 @@ MemoryEstimate shell_model_memory(double vertices, const std::string& what)
 
 namespace softgrain::spd {
 
-void ShellModel::Candidate::transfer(Archive& archive)
-{
-    archive(vertex);
-    archive(a);
-    archive(b);
-    archive(reach);
-    archive(friction);
-    archive(active);
-    archive(overlap);
-    archive(fn);
-    archive(w_a);
-    archive(w_b);
-    archive(distance);
-    archive(force);
-}
-
 void ShellModel::transfer(Archive& archive)
 {
     archive(shells_);
-    for (Eigen::VectorXd* state : {&x_, &v_, &f_, &inverse_mass_, &applied_, &contact_force_})
+    for (Eigen::VectorXd* state : {&x_, &v_, &f_, &inverse_mass_, &applied_})
         archive(*state);
+    contacts_.transfer_forces(archive);
     archive(edge_);
     for (std::vector<double>* history :
-         {&length_prev_, &axial_, &torque_, &core_V_prev_, &core_p_, &core_V0_, &contact_normal_})
+         {&length_prev_, &axial_, &torque_, &core_V_prev_, &core_p_, &core_V0_})
         archive(*history);
+    contacts_.transfer_normals(archive);
     archive(shell_of_);
-    archive(candidates_);
-    if (archive.loading()) { // what follows from the state: the candidates' indexes, the scratch of forces
-        index_candidates();
+    contacts_.transfer_candidates(archive, shell_of_, steps_);
+    if (archive.loading()) { // the scratch of the forces
         edge_squared_.assign(vertices(), 0.0);
         edge_rotation_.assign(vertices(), 0.0);
     }
-    bool listed = neighbours_.has_value();
-    archive(listed);
-    if (archive.loading()) {
-        neighbours_.reset();
-        if (listed) neighbours_.emplace(1.0, 0.0); // cutoff and skin are read next
-    }
-    if (listed) archive(*neighbours_);
-    archive(list_length_);
-    archive(list_builds_);
-    archive(links_);
-    archive(link_law_);
-    archive(contact_);
+    links_.transfer(archive);
+    contacts_.transfer_law(archive);
     archive(steps_);
 }
 

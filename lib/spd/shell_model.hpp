@@ -8,13 +8,20 @@
 // torques, core pressure) lives in per-element, per-vertex and per-shell records updated at each force
 // evaluation from the change of geometry since the previous one. Cohesive links between shells (section 6)
 // are optional per-link records (lib/spd/cohesive_link.hpp) with their broken state.
+//
+// ShellModel owns the vertex state, the shells' laws and cores (eqs. (1)-(4), the RATTLE constraint of an
+// incompressible core) and the time step; two parts do one job each: the contacts (ShellContacts,
+// spd/shell_contacts.hpp: candidates, eqs. (6)-(7), the gather) and the cohesive links (ShellLinks,
+// spd/shell_links.hpp).
 #pragma once
 
-#include "core/neighbour_list.hpp"
 #include "core/resources.hpp"
 #include "core/vector.hpp"
 #include "spd/calibration.hpp"
 #include "spd/cohesive_link.hpp"
+#include "spd/shell.hpp"
+#include "spd/shell_contacts.hpp"
+#include "spd/shell_links.hpp"
 
 #include <Eigen/Core>
 
@@ -38,38 +45,6 @@ namespace softgrain::spd {
 // (vertex state, laws, cell list and contact candidates).
 MemoryEstimate shell_model_memory(double vertices, const std::string& what);
 
-// One shell: its vertex range, topology and laws. Stiffnesses of a frozen (rigid) shell are unused.
-struct Shell
-{
-    int first = 0, count = 0; // vertices [first, first + count)
-    bool closed = true;       // closed ring, or open chain ending on the absent vertex
-    bool rigid = false;       // all vertices frozen, moved kinematically (walls, section 4.1)
-    ShellLaws laws;
-    double depth = 1;  // out-of-plane length s [m]
-    double radius = 0; // vertex disk / sphero-segment radius r [m]
-    // Undrained core modulus, eq. (4) [Pa]; 0: no core stiffness; INFINITY: incompressible core, the limit
-    // eta -> inf of eq. (24), imposed as the exact constraint A(x) = A0 whose multiplier is the core pressure
-    // (ShellModel::step, decision spd-eta-infinity).
-    double K_Omega = 0;
-    double pressure_applied = 0; // constant (drained) pressure acting inside the shell [Pa]
-    int elements() const { return closed ? count : count - 1; }
-    bool has_hinge(int local) const { return closed || (local > 0 && local < count - 1); }
-    bool incompressible() const { return closed && std::isinf(K_Omega); }
-};
-
-// Contact law between shells: normal eq. (6), incremental Coulomb friction eq. (7) when mu > 0 (the scenes of
-// sections 3-4 are frictionless: decision spd-ring-walls).
-struct ContactLaw
-{
-    double k_n = 0; // [N/m]
-    double k_t = 0; // [N/m]
-    double mu = 0;  // friction coefficient
-    // Normal viscous damping c_n [N s/m] for quasi-static relaxation only (decision spd-contact-damping): a
-    // force -c_n (v_rel . n) while in contact, the total normal force kept repulsive. It vanishes at rest and
-    // removes the chatter of a vertex at the edge of a flat contact (not part of eq. (6)).
-    double normal_damping = 0;
-};
-
 class ShellModel
 {
   public:
@@ -79,20 +54,20 @@ class ShellModel
 
     // Freezes one degree of freedom (0 = x, 1 = y) of a vertex: it keeps its velocity (zero by default).
     void freeze(int vertex, int component);
-    void set_contact_law(ContactLaw law) { contact_ = law; }
+    void set_contact_law(ContactLaw law) { contacts_.set_law(law); }
     // Cohesive links between vertices of different shells (section 6, lib/spd/cohesive_link.hpp): their
     // forces are added at each force evaluation, a link whose yield function eq. (39) reaches 0 breaks for
     // good and adds no force from then on (decision spd-tissue-link-breaking). Scenes without links pay
     // nothing.
     void set_cohesive_links(std::vector<CohesiveLink> links, const CohesiveLaw& law)
     {
-        links_ = std::move(links);
-        link_law_ = law;
+        links_.set(std::move(links), law);
     }
-    const std::vector<CohesiveLink>& links() const { return links_; }
-    const CohesiveLaw& link_law() const { return link_law_; }
-    int broken_links() const;
-    double link_energy() const; // sum of the intact links' energies k_n u_n^2/2 + k_t u_t^2/2 [J]
+    const std::vector<CohesiveLink>& links() const { return links_.links(); }
+    const CohesiveLaw& link_law() const { return links_.law(); }
+    int broken_links() const { return links_.broken(); }
+    // Sum of the intact links' energies k_n u_n^2/2 + k_t u_t^2/2 [J].
+    double link_energy() const { return links_.energy(view()); }
     // A constant external force on a vertex [N] (a point load, section 3).
     void set_applied_force(int vertex, const Vec2& force) { applied_.segment<2>(2 * vertex) = force; }
 
@@ -150,19 +125,11 @@ class ShellModel
     Vec2 velocity(int i) const { return {v_[2 * i], v_[2 * i + 1]}; }
     Vec2 force(int i) const { return {f_[2 * i], f_[2 * i + 1]}; }
     // Sum of contact forces received by the vertices of `shell` from other shells, and per vertex.
-    Vec2 contact_force_on(int shell) const;
-    double contact_normal(int vertex) const { return contact_normal_[vertex]; }
-    // A contact of the last force evaluation: vertex against the element (a, b) of another shell, the
-    // closest point of the element [m], the normal force f_n (eq. (6)) and tangential force f_t (eq. (7)) [N]
-    // and the force on the vertex [N] (the element's ends receive its opposite).
-    struct ContactView
-    {
-        int vertex, a, b;
-        Vec2 point;
-        double normal_force, tangential_force;
-        Vec2 force;
-    };
-    std::vector<ContactView> active_contacts() const; // in candidate order
+    Vec2 contact_force_on(int shell) const { return contacts_.force_on(shells_[shell]); }
+    double contact_normal(int vertex) const { return contacts_.normal(vertex); }
+    // A contact of the last force evaluation (spd/shell_contacts.hpp); the active ones in candidate order.
+    using ContactView = spd::ContactView;
+    std::vector<ContactView> active_contacts() const { return contacts_.active(view()); }
     const std::vector<Shell>& shells() const { return shells_; }
     int vertices() const { return static_cast<int>(x_.size() / 2); }
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
@@ -189,16 +156,14 @@ class ShellModel
 
     // Contact detection cost (decision spd-contact-detection): (vertex, element) pairs checked per step, and
     // rebuilds of the vertex neighbour list so far.
-    std::size_t contact_candidates() const { return candidates_.size(); }
-    int neighbour_list_builds() const { return list_builds_; }
+    std::size_t contact_candidates() const { return contacts_.candidates(); }
+    int neighbour_list_builds() const { return contacts_.list_builds(); }
     // Skin of the vertex neighbour list [m] (0 before the first step).
-    double neighbour_skin() const { return neighbours_ ? neighbours_->skin() : 0.0; }
+    double neighbour_skin() const { return contacts_.skin(); }
 
   private:
-    // Neighbours along a closed shell (local index wrapped without an integer division: these run for every
-    // vertex of every step).
-    int next(const Shell& s, int local) const { return s.first + (local + 1 == s.count ? 0 : local + 1); }
-    int prev(const Shell& s, int local) const { return s.first + (local == 0 ? s.count - 1 : local - 1); }
+    // The state its parts read: the contacts and the links.
+    ShellView view() const { return {x_, v_, shells_, shell_of_}; }
     void internal_forces(const Shell& s);
     double shell_stretch_energy(const Shell& s) const;
     double shell_bending_energy(const Shell& s) const;
@@ -234,7 +199,6 @@ class ShellModel
     // are xs (2 count entries): outward for a CCW polygon [m].
     static Vec2 vertex_area_gradient(const double* xs, int count, int k);
     Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
-    void update_contact_candidates();
     int shell_of(int vertex) const { return shell_of_[vertex]; }
     // The free degree of freedom with the largest |f| (damping excluded) and that |f|.
     std::pair<Eigen::Index, double> largest_free_force() const;
@@ -246,7 +210,6 @@ class ShellModel
 
     std::vector<Shell> shells_;
     Eigen::VectorXd x_, v_, f_, inverse_mass_, applied_;
-    Eigen::VectorXd contact_force_;           // per dof: contact force received [N]
     std::vector<double> length_prev_, axial_; // per element (indexed by its first vertex): l at last call, F
     std::vector<double> torque_;              // per vertex: M
     // Per element (indexed by its first vertex): the element vector x_(k+1) - x_k at the last call (state:
@@ -255,46 +218,9 @@ class ShellModel
     std::vector<Vec2> edge_;
     std::vector<double> edge_squared_, edge_rotation_;
     std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
-    std::vector<double> contact_normal_;                 // per vertex: normal contact force received [N]
     std::vector<int> shell_of_;                          // per vertex
-    // A (vertex, element) pair that may touch: the element (a, b) of another shell. It keeps the tangential
-    // force f_t of eq. (7) [N] (0 while the pair is not in contact) and, per step, the contact it carries.
-    struct Candidate
-    {
-        int vertex, a, b;
-        double reach = 0; // r_i + r_j of the vertex and the element [m]
-        double friction = 0;
-        bool active = false, overlap = false; // in contact; overlap beyond 95% of r_i + r_j (exit 3)
-        double fn = 0, w_a = 0, w_b = 0;      // normal force [N], transfer weights of Fig. 5
-        double distance = 0;                  // vertex-element distance while active [m]
-        Vec2 force = Vec2::Zero();            // force on the vertex [N]
-        void transfer(Archive& archive);
-    };
-    std::vector<Candidate> candidates_; // sorted by (vertex, a)
-    // Start of each run of candidates of one vertex against one other shell, then candidates_.size().
-    std::vector<std::size_t> contact_groups_;
-    std::optional<NeighbourList<2>> neighbours_;
-    double list_length_ = 0; // element length bound L of the list's cutoff [m]
-    int list_builds_ = 0;
-    bool outside_bounding_box(const Candidate& candidate) const;
-    void evaluate_contact(Candidate& candidate, double old_friction, double dt) const;
-    bool evaluate_contact_group(std::size_t begin, std::size_t end, double dt);
-    // Per vertex, the candidates whose contact acts on it (as the contacting vertex or as an end of the
-    // element), in candidate order: gather_terms_[gather_offsets_[i] ... gather_offsets_[i + 1]), each the
-    // candidate index m shifted left by 2 with its ContactRole in the low bits. touched_[i] is set when a
-    // contact acting on vertex i became active in this step (most vertices touch nothing: their gather is
-    // one test) and cleared by its gather.
-    enum ContactRole : std::uint32_t { role_vertex = 0, role_end_a = 1, role_end_b = 2 };
-    std::vector<std::size_t> gather_offsets_;
-    std::vector<std::uint32_t> gather_terms_;
-    std::vector<unsigned char> touched_;
-    void index_candidates();
-    void gather_contact_force(int i);
-    void throw_overlap() const;
-    void add_link_forces();
-    std::vector<CohesiveLink> links_;
-    CohesiveLaw link_law_;
-    ContactLaw contact_;
+    ShellContacts contacts_;
+    ShellLinks links_;
     std::int64_t steps_ = 0;
 };
 

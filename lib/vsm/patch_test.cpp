@@ -1,10 +1,13 @@
 #include "vsm/patch_test.hpp"
 
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace softgrain::vsm {
 
@@ -74,6 +77,19 @@ PatchResult run_patch_test(const PatchSetup& s, const PatchObserver& observe)
     result.steps = steps;
     result.dt = dt;
     return result;
+}
+
+double patch_relative_error(const PatchSetup& setup, const PatchResult& result)
+{
+    if (setup.variant == PatchVariant::A) {
+        if (!(result.force_scale > 0 && std::isfinite(result.force_scale)))
+            throw NumericalError(
+                "patch test A: the force scale E alpha h^2 = " + std::to_string(result.force_scale) +
+                    " N is not a positive finite number",
+                0, "E or alpha so small or large that the particle forces under- or overflow");
+        return result.max_error / result.force_scale;
+    }
+    return result.max_error / patch_displacement_gradient(setup.alpha).rowwise().sum().norm();
 }
 
 } // namespace softgrain::vsm

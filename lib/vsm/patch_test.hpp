@@ -65,4 +65,10 @@ using PatchObserver = std::function<void(const PatchState&)>;
 
 PatchResult run_patch_test(const PatchSetup& setup, const PatchObserver& observe = {});
 
+// The error of a patch test relative to its scale: A's force error over the typical particle force
+// E alpha h^2, B's and C's displacement error over the largest exact displacement |alpha M (1, 1, 1)|
+// (eq. (52) at the corner X = (1, 1, 1) m). NumericalError when A's force scale under- or overflows (e.g.
+// E = 4.9e-324 Pa): there is then no error to measure, only 0/0.
+double patch_relative_error(const PatchSetup& setup, const PatchResult& result);
+
 } // namespace softgrain::vsm

@@ -116,7 +116,7 @@ PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchS
         snap.x = integrator.positions();
         measure(model, snap.x, snap.t, snap);
         snap.punch_force = punch_reaction(model, domain, snap.x, snap.t);
-        observe(snap);
+        if (observe) observe(snap);
         r.snapshots.push_back(std::move(snap));
     }
     r.steps = integrator.state().step;

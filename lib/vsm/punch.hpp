@@ -51,8 +51,9 @@ struct PunchResult
 
 Domain punch_domain(double width, double height, double thickness); // labels: box 0..5, top free 3, punch 6
 
-// observe sees each snapshot; on_step, if given, the start and every time step.
-PunchResult run_punch(const PunchSetup& setup, const std::function<void(const PunchSnapshot&)>& observe,
+// observe, if given, sees each snapshot as it is taken (the result holds them all); on_step, if given, the
+// start and every time step.
+PunchResult run_punch(const PunchSetup& setup, const std::function<void(const PunchSnapshot&)>& observe = {},
                       const StepObserver& on_step = {});
 
 } // namespace softgrain::vsm

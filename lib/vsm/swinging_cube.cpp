@@ -157,4 +157,10 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
     return r;
 }
 
+ModeErrorParts mode_error_parts(const SwingingCube& cube, const SwingingCubeError& error)
+{
+    const double cos_wt = std::cos(cube.angular_frequency() * error.t);
+    return {std::abs(error.mode_amplitude - cos_wt) / std::abs(cos_wt), error.residual / std::abs(cos_wt)};
+}
+
 } // namespace softgrain::vsm

@@ -80,4 +80,13 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
                                      const std::function<void(const SwingingCubeError&)>& observe = {},
                                      int samples = 0, const StepObserver& on_step = {});
 
+// An error split in two parts, |e|^2 = |c - cos(omega t)|^2 |phi|^2 + |r|^2 (r orthogonal to phi), each
+// normalised like the total (by |cos(omega t)| |phi|): the error of the swinging mode itself (phase and
+// amplitude) and the rest (other modes).
+struct ModeErrorParts
+{
+    double mode = 0, other = 0;
+};
+ModeErrorParts mode_error_parts(const SwingingCube& cube, const SwingingCubeError& error);
+
 } // namespace softgrain::vsm

@@ -136,3 +136,25 @@ TEST_CASE("a triangle pushed to its centre stays symmetric, bonds carry F/sqrt3,
         }
     }
 }
+
+TEST_CASE("sd.many's balanced starts: every bond of the line carries F, of the triangle F/sqrt3, at h0 "
+          "[note 20, eqs. 1, 2]")
+{
+    const double F = 1e-3, h0 = 1.0;
+    for (const BalancedStart& start :
+         {compressed_line(material, 5, F, h0), pushed_triangle(material, F, h0)}) {
+        CAPTURE(start.system.dimension);
+        CHECK(start.pair_force == (start.system.dimension == 1 ? F : F / std::sqrt(3.0)));
+        const std::vector<double> gaps(start.system.bonds.size(), h0);
+        const ManyParticleRates rates = many_particle_rates(start.system, 0.0, start.positions, gaps);
+        // The deflection is recovered from the centre distance |X| = 2R + h0 - 2 delta0 (eq. 2), whose
+        // rounding (a few eps |X|, the triangle's corners through cos and sin) is relative error
+        // eps |X| / delta0 of delta0 and, through F_ela(delta) of order delta^(3/2), of the bond force.
+        const double tolerance = 10 * round_off * start.distance / start.deflection;
+        for (std::size_t bond = 0; bond < gaps.size(); ++bond) {
+            CAPTURE(bond);
+            CHECK_CLOSE(rates.deflection[bond], start.deflection, (Tolerance{tolerance, 0.0}));
+            CHECK_CLOSE(rates.pair_force[bond], start.pair_force, (Tolerance{tolerance, 0.0}));
+        }
+    }
+}

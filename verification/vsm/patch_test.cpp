@@ -9,9 +9,11 @@
 //      condition number (~10 for 27-64 particles) amplifies: bound 50 eps (1 m) = 1.1e-14 m (observed <= 9
 //      eps).
 #include "vsm/patch_test.hpp"
+#include "core/errors.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <vector>
 
@@ -89,4 +91,31 @@ TEST_CASE("patch test C is failed by eq. (43) with nominal tractions A_ab T_ab [
     const PatchResult r = run(PatchVariant::C, 3, 1, InternalForce::eq43);
     INFO("eq. (43) patch test C error " << r.max_error << " m (exact displacement up to 2.4e-3 m)");
     CHECK(r.max_error > 1e-6);
+}
+
+TEST_CASE(
+    "patch test relative error: A to E alpha h^2, B and C to the corner displacement alpha |M (1, 1, 1)| "
+    "[VSM eq. (52)]")
+{
+    PatchSetup setup;
+    setup.alpha = 1e-4;
+    PatchResult result;
+    result.max_error = 3e-9;
+    result.force_scale = 11.0;
+    // One division each: the results are within one rounding of the quotients written here; the corner
+    // displacement alpha (1 + 2 + 3, 4 + 5 + 6, 7 + 8 + 9) = alpha (6, 15, 24) has norm alpha sqrt(837).
+    setup.variant = PatchVariant::A;
+    CHECK_CLOSE(patch_relative_error(setup, result), 3e-9 / 11.0, (Tolerance{round_off, 0}));
+    for (PatchVariant variant : {PatchVariant::B, PatchVariant::C}) {
+        setup.variant = variant;
+        CHECK_CLOSE(patch_relative_error(setup, result), 3e-9 / (1e-4 * std::sqrt(837.0)),
+                    (Tolerance{4 * round_off, 0}));
+    }
+    // A force scale that under- or overflows (E = 4.9e-324 Pa) leaves no error to measure: a diagnosis, not
+    // 0/0.
+    setup.variant = PatchVariant::A;
+    for (double scale : {0.0, std::numeric_limits<double>::infinity()}) {
+        result.force_scale = scale;
+        CHECK_THROWS_AS(patch_relative_error(setup, result), NumericalError);
+    }
 }
