@@ -38,15 +38,15 @@ TEST_CASE("3D G from Lees-Edwards steps of 5e-9 = k_c/(sqrt(2) a) - 3/4 P for a 
     }
 }
 
-TEST_CASE("dpm.shear_modulus3d refuses A0_floppy below the mesh's own shape parameter, naming A0_floppy "
+TEST_CASE("dpm.shear_modulus3d refuses A0 below the mesh's own shape parameter, naming A0 and its old name "
           "[DPM sec. 9.3.1: A_min^3D(icosahedron) = 1.0984]")
 {
     // Exit 2 before any packing is jammed; the message names the scene's key, its value and the bound.
     const auto [exit_code, output] =
-        verification::run_softgrain("run dpm.shear_modulus3d --set model=all --set A0_floppy=1.05 --set "
+        verification::run_softgrain("run dpm.shear_modulus3d --set model=all --set A0=1.05 --set "
                                     "packings=1 --out /tmp/softgrain-dpm-shear-modulus3d-input --quiet");
     CAPTURE(output);
     CHECK(exit_code == exit_bad_input);
-    CHECK(output.find("'A0_floppy' = '1.05") != std::string::npos);
+    CHECK(output.find("'A0' (old name 'A0_floppy') = '1.05") != std::string::npos);
     CHECK(output.find("1.098") != std::string::npos); // the icosahedron's A_min^3D
 }

@@ -48,14 +48,14 @@ struct ShearModulus3dOptions
 // Floppy particles need A0 above the mesh's own A^3D (A_min^3D, sec. 9.3.1). Checked before any packing is
 // jammed, so that the message names this scene's key (jam3d would name model_shape3d's A0, and only after
 // the other models' members of the ensemble had run).
-void check_A0_floppy(const ShearModulus3dOptions& options)
+void check_floppy_A0(const ShearModulus3dOptions& options)
 {
     const auto& models = options.models;
     if (std::find(models.begin(), models.end(), ShapeModel::floppy) == models.end()) return;
     const TriangleMesh mesh = mesh_from_name(options.jam.mesh);
     const double A_min = mesh_shape_parameter3d(mesh, mesh_coordinates(mesh), 0);
     if (options.jam.A0_floppy < A_min)
-        throw InputError("parameter 'A0_floppy' = '" + std::to_string(options.jam.A0_floppy) +
+        throw InputError("parameter 'A0' (old name 'A0_floppy') = '" + std::to_string(options.jam.A0_floppy) +
                          "' is below the " + options.jam.mesh + "'s own shape parameter A_min^3D = " +
                          std::to_string(A_min) + "; allowed: a real number >= it");
 }
@@ -95,10 +95,11 @@ OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
                  "pressures log-spaced in (P_t, pressure_max]")
         .at_least(1);
     binding
-        .real(jam(&Jam3dOptions::A0_floppy), "A0_floppy", "1",
+        .real(jam(&Jam3dOptions::A0_floppy), "A0", "1",
               "floppy: preferred shape parameter A0^3D, above the mesh's own (icosahedron "
               "1.098; 1.12 as Fig. 9.15b)")
-        .at_least(1.0);
+        .at_least(1.0)
+        .renamed_from("A0_floppy");
     binding.choice(jam(&Jam3dOptions::interaction), "contact",
                    {{"rough", InteractionKind::rough}, {"smooth", InteractionKind::smooth}},
                    "contacts between particles: rough = vertex spheres of diameter sigma (eqs. "
@@ -116,7 +117,7 @@ OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
               "at round-off, usually far below)")
         .positive();
     binding.seed(jam(&Jam3dOptions::seed), "seed", "seed of the random placement of the first packing");
-    binding.check(check_A0_floppy);
+    binding.check(check_floppy_A0);
     binding.check([](const ShearModulus3dOptions& options) {
         if (options.jam.pressure_max <= options.jam.pressure_onset)
             throw InputError(
