@@ -67,34 +67,35 @@ double ellipse_aspect_for(int n, double A0)
 
 } // namespace
 
-Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& o)
+Eigen::Matrix2Xd initial_boundary(const BoundaryJamOptions& options)
 {
-    const double ring_radius = 2.5 + o.boundary_sigma; // [d]
-    if (o.ka > 0 && !(o.A0 >= minimum_shape_parameter(o.boundary_nodes)))
-        throw InputError("A0 = " + std::to_string(o.A0) + ": below A_min = " +
-                         std::to_string(minimum_shape_parameter(o.boundary_nodes)) + " of the ring");
-    const double aspect = o.ka > 0 ? ellipse_aspect_for(o.boundary_nodes, o.A0) : 1.0;
-    const Eigen::Matrix2Xd ring = ellipse_polygon(o.boundary_nodes, ring_radius, aspect);
-    const double edge = particle_perimeter(ring.reshaped(), 0, o.boundary_nodes) / o.boundary_nodes;
-    if (edge >= o.boundary_sigma)
-        throw InputError("boundary_sigma = " + std::to_string(o.boundary_sigma) +
-                         (o.ka > 0 ? " at A0 = " + std::to_string(o.A0) : std::string()) +
+    const double ring_radius = 2.5 + options.boundary_sigma; // [d]
+    if (options.ka > 0 && !(options.A0 >= minimum_shape_parameter(options.boundary_nodes)))
+        throw InputError("A0 = " + std::to_string(options.A0) + ": below A_min = " +
+                         std::to_string(minimum_shape_parameter(options.boundary_nodes)) + " of the ring");
+    const double aspect = options.ka > 0 ? ellipse_aspect_for(options.boundary_nodes, options.A0) : 1.0;
+    const Eigen::Matrix2Xd ring = ellipse_polygon(options.boundary_nodes, ring_radius, aspect);
+    const double edge =
+        particle_perimeter(ring.reshaped(), 0, options.boundary_nodes) / options.boundary_nodes;
+    if (edge >= options.boundary_sigma)
+        throw InputError("boundary_sigma = " + std::to_string(options.boundary_sigma) +
+                         (options.ka > 0 ? " at A0 = " + std::to_string(options.A0) : std::string()) +
                          ": ring vertices must overlap their neighbours (edge " + std::to_string(edge) +
                          "); raise boundary_nodes or boundary_sigma, or lower A0");
     return ring;
 }
 
-BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
+BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& options)
 {
     const double pi = std::numbers::pi, d = 1.0, energy_target = 1e-8;
     BoundaryJamResult out;
     DpmSystem& s = out.system;
     s.interaction = InteractionKind::rough;
     Eigen::VectorXd& x = out.x;
-    Rng rng(o.seed);
+    Rng rng(options.seed);
     // Disks at random in a circle of radius 1.5 d, not overlapping; the ring of radius 2.5 d around them.
     std::vector<Eigen::Vector2d> centres;
-    while (static_cast<int>(centres.size()) < o.disks) {
+    while (static_cast<int>(centres.size()) < options.disks) {
         const double r = 1.5 * std::sqrt(rng.uniform()), phi = 2 * pi * rng.uniform();
         const Eigen::Vector2d c(r * std::cos(phi), r * std::sin(phi));
         bool free = true;
@@ -105,21 +106,21 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
             s.add_particle(Eigen::Matrix2Xd(c), d, ShapeParameters{}, x);
         }
     }
-    const Eigen::Matrix2Xd ring_vertices = initial_boundary(o);
+    const Eigen::Matrix2Xd ring_vertices = initial_boundary(options);
     ShapeParameters ring;
-    ring.kl = o.kl;
+    ring.kl = options.kl;
     const Eigen::VectorXd ring_x = ring_vertices.reshaped();
-    ring.l0 = particle_perimeter(ring_x, 0, o.boundary_nodes) / o.boundary_nodes;
-    if (o.ka > 0) { // eq. (9.1) area term with a0 = (N_mu l0)^2/(4 pi A0)
-        ring.ka = o.ka;
-        ring.a0 = std::pow(o.boundary_nodes * ring.l0, 2) / (4 * pi * o.A0);
+    ring.l0 = particle_perimeter(ring_x, 0, options.boundary_nodes) / options.boundary_nodes;
+    if (options.ka > 0) { // eq. (9.1) area term with a0 = (N_mu l0)^2/(4 pi A0)
+        ring.ka = options.ka;
+        ring.a0 = std::pow(options.boundary_nodes * ring.l0, 2) / (4 * pi * options.A0);
     }
-    s.add_particle(ring_vertices, o.boundary_sigma, ring, x);
+    s.add_particle(ring_vertices, options.boundary_sigma, ring, x);
 
     FireOptions fire;
     // The area term's Hessian is k_a grad(a) grad(a)^T, |grad a|^2 ~ N_mu l0^2 (each vertex moves a by ~l0).
-    const double area_stiffness = o.ka * o.boundary_nodes * ring.l0 * ring.l0;
-    fire.dt_max = 0.3 / std::sqrt(std::max({4.0, 4 * o.kl, 2 * area_stiffness}));
+    const double area_stiffness = options.ka * options.boundary_nodes * ring.l0 * ring.l0;
+    fire.dt_max = 0.3 / std::sqrt(std::max({4.0, 4 * options.kl, 2 * area_stiffness}));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-3 * std::sqrt(energy_target);
     double step = 1e-2; // relative shrink of l0
@@ -146,11 +147,12 @@ BoundaryJamResult jam_in_boundary(const BoundaryJamOptions& o)
         if (r.energy >= energy_target) break;
     }
     std::vector<std::pair<int, int>> contacts;
-    for (int a = 0; a < o.disks; ++a)
-        for (int b = a + 1; b < o.disks; ++b)
+    for (int a = 0; a < options.disks; ++a)
+        for (int b = a + 1; b < options.disks; ++b)
             if ((x.segment<2>(2 * a) - x.segment<2>(2 * b)).norm() < d) contacts.push_back({a, b});
     out.disk_contacts = static_cast<int>(contacts.size());
-    out.theta = o.disks == 4 ? parallelogram_angle(x, contacts) : std::numeric_limits<double>::quiet_NaN();
+    out.theta =
+        options.disks == 4 ? parallelogram_angle(x, contacts) : std::numeric_limits<double>::quiet_NaN();
     return out;
 }
 

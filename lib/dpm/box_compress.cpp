@@ -43,7 +43,7 @@ double energy_in_box(const DpmSystem& system, const Eigen::VectorXd& x, double w
 
 } // namespace
 
-BoxCompressResult compress_in_box(const BoxCompressOptions& o)
+BoxCompressResult compress_in_box(const BoxCompressOptions& options)
 {
     const double pi = std::numbers::pi, sigma = 1.0, ratio = 1.4;
     BoxCompressResult out;
@@ -51,28 +51,30 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
     s.interaction = InteractionKind::rough;
     // Deformable particles: edge 0.85 sigma, k_a a0^2 = k_c sigma^2 for the small ones (decision
     // dpm-jam-polygons).
-    const double r_small = 0.85 * sigma / (2 * std::sin(pi / o.nodes_small));
-    const double a0_small = 0.5 * o.nodes_small * r_small * r_small * std::sin(2 * pi / o.nodes_small);
+    const double r_small = 0.85 * sigma / (2 * std::sin(pi / options.nodes_small));
+    const double a0_small =
+        0.5 * options.nodes_small * r_small * r_small * std::sin(2 * pi / options.nodes_small);
     const double ka = 1.0 / (a0_small * a0_small);
     out.pressure_unit = ka * a0_small; // k_a a0: the area (bulk) modulus of one particle
-    s.kc = o.deformable ? 1.0 : out.pressure_unit;
+    s.kc = options.deformable ? 1.0 : out.pressure_unit;
     // Outer diameter of the small particle (vertex disks included).
     const double d_small = 2 * r_small + sigma;
     out.diameter_small = d_small;
     double area = 0;
-    for (int m = 0; m < o.particles; ++m)
-        area += std::pow(m < o.particles / 2 ? d_small : ratio * d_small, 2);
+    for (int m = 0; m < options.particles; ++m)
+        area += std::pow(m < options.particles / 2 ? d_small : ratio * d_small, 2);
     double L = std::sqrt(area / 0.35); // start: particles' squared diameters fill 35 % of the box
-    Rng rng(o.seed);
+    Rng rng(options.seed);
     std::vector<Eigen::Vector2d> centres;
     std::vector<double> diameters;
     Eigen::VectorXd x;
-    for (int m = 0; m < o.particles; ++m) {
-        const bool small = m < o.particles / 2;
+    for (int m = 0; m < options.particles; ++m) {
+        const bool small = m < options.particles / 2;
         const double d = small ? d_small : ratio * d_small;
         Eigen::Vector2d c;
         for (int tries = 0;; ++tries) {
-            if (tries > 100000) throw InputError("particles = " + std::to_string(o.particles) + ": no room");
+            if (tries > 100000)
+                throw InputError("particles = " + std::to_string(options.particles) + ": no room");
             c = Eigen::Vector2d(rng.uniform(0.5 * d, L - 0.5 * d), rng.uniform(0.5 * d, L - 0.5 * d));
             bool free = true;
             for (std::size_t q = 0; q < centres.size(); ++q)
@@ -81,8 +83,8 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
         }
         centres.push_back(c);
         diameters.push_back(d);
-        if (o.deformable) {
-            const int n = small ? o.nodes_small : o.nodes_large;
+        if (options.deformable) {
+            const int n = small ? options.nodes_small : options.nodes_large;
             const double r = 0.5 * (d - sigma), a0 = 0.5 * n * r * r * std::sin(2 * pi / n);
             ShapeStiffness k;
             k.ka = ka;
@@ -97,7 +99,7 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
     FireOptions fire;
     fire.dt_max = 0.3 / std::sqrt(std::max(4 * s.kc, vibrational_modes(s, x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
-    fire.force_tolerance = 1e-3 * o.pressure_start * out.pressure_unit;
+    fire.force_tolerance = 1e-3 * options.pressure_start * out.pressure_unit;
     double w = L, h = L;
     const auto relax = [&](long step) {
         const FireResult r = fire_minimise(
@@ -123,7 +125,7 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
     // wall pressure reaches P0.
     long step = 0;
     for (BoxState state = relax(step);; state = relax(++step)) {
-        if (0.5 * (state.pressure_x + state.pressure_y) >= o.pressure_start) {
+        if (0.5 * (state.pressure_x + state.pressure_y) >= options.pressure_start) {
             out.states.push_back(state);
             break;
         }
@@ -142,8 +144,8 @@ BoxCompressResult compress_in_box(const BoxCompressOptions& o)
     }
     // Uniaxial stage: the top wall moves down to (1 - strain) h0 in equal steps.
     const double h0 = h;
-    for (int k = 1; k <= o.steps; ++k) {
-        h = h0 * (1 - o.strain * k / o.steps);
+    for (int k = 1; k <= options.steps; ++k) {
+        h = h0 * (1 - options.strain * k / options.steps);
         out.states.push_back(relax(++step));
     }
     return out;

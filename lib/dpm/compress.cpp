@@ -101,45 +101,45 @@ template CompressionResult compress_between_plates<2>(Eigen::VectorXd, const Bod
 template CompressionResult compress_between_plates<3>(Eigen::VectorXd, const BodyEnergy&, double, double,
                                                       const PlateSchedule&, const PlateObserver&);
 
-DpmSystem compression_shell(const CompressionOptions& o, Eigen::VectorXd& x)
+DpmSystem compression_shell(const CompressionOptions& options, Eigen::VectorXd& x)
 {
     const double pi = std::numbers::pi, sigma = 1.0;
-    const int n = o.nodes;
+    const int n = options.nodes;
     const double R = sigma / (2 * std::sin(pi / n)); // edge = sigma
     const double a0 = 0.5 * n * R * R * std::sin(2 * pi / n);
     ShapeStiffness k;
-    k.ka = o.ka * sigma * sigma / (a0 * a0);
-    k.kl = o.kl;
-    k.kb = o.kb * sigma * sigma;
+    k.ka = options.ka * sigma * sigma / (a0 * a0);
+    k.kl = options.kl;
+    k.kb = options.kb * sigma * sigma;
     DpmSystem system;
     system.add_particle(regular_polygon(n, R, Eigen::Vector2d(0, 0), 0.0), sigma,
                         table_9_1_parameters(ShapeModel::shell, n, a0, minimum_shape_parameter(n), k), x);
     return system;
 }
 
-CompressionResult compress_shell(const CompressionOptions& o, const PlateObserver& observe)
+CompressionResult compress_shell(const CompressionOptions& options, const PlateObserver& observe)
 {
     Eigen::VectorXd x;
-    const DpmSystem system = compression_shell(o, x);
+    const DpmSystem system = compression_shell(options, x);
     const double sigma = system.particles.front().sigma;
     const BodyEnergy body = [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return total_energy(system, y, gradient, nullptr);
     };
     return compress_between_plates<2>(x, body, sigma, vibrational_modes(system, x).eigenvalues.maxCoeff(),
-                                      o.schedule(), observe);
+                                      options.schedule(), observe);
 }
 
-CompressionResult compress_spring_network(const CompressionOptions& o, const PlateObserver& observe)
+CompressionResult compress_spring_network(const CompressionOptions& options, const PlateObserver& observe)
 {
-    const SpringNetwork network =
-        disordered_triangular_disk(o.network_nodes, o.network_jitter, o.network_k, o.seed);
+    const SpringNetwork network = disordered_triangular_disk(options.network_nodes, options.network_jitter,
+                                                             options.network_k, options.seed);
     const BodyEnergy body = [&network](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return spring_network_energy(network, y, gradient);
     };
     // A node joins at most 6 springs k (lengths ~ 1): lambda_max <= 4 * 6 k / 2 = 12 k (Gershgorin, unit
     // masses).
     CompressionResult out =
-        compress_between_plates<2>(network.x, body, 1.0, 12 * o.network_k, o.schedule(), observe);
+        compress_between_plates<2>(network.x, body, 1.0, 12 * options.network_k, options.schedule(), observe);
     out.springs = static_cast<int>(network.springs.size());
     return out;
 }

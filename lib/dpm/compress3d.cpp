@@ -45,10 +45,10 @@ double gershgorin_bound(const Eigen::MatrixXd& m)
     return m.cwiseAbs().rowwise().sum().maxCoeff();
 }
 
-Compression3dResult compress3d_tetrahedra(const Compression3dOptions& o, const BodyObserver& observe)
+Compression3dResult compress3d_tetrahedra(const Compression3dOptions& options, const BodyObserver& observe)
 {
-    const ElasticTetrahedra body =
-        elastic_tetrahedra(compression_mesh(o.mesh), IsotropicElasticity::from_young(o.E, o.nu));
+    const ElasticTetrahedra body = elastic_tetrahedra(compression_mesh(options.mesh),
+                                                      IsotropicElasticity::from_young(options.E, options.nu));
     const BodyEnergy energy = [&body](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return tetrahedra_energy(body, y, gradient, nullptr);
     };
@@ -56,37 +56,38 @@ Compression3dResult compress3d_tetrahedra(const Compression3dOptions& o, const B
     tetrahedra_energy(body, body.reference, nullptr, &hessian);
     Compression3dResult out;
     out.compression = compress_between_plates<3>(body.reference, energy, 1.0, gershgorin_bound(hessian),
-                                                 o.schedule, with_gradient(energy, observe));
-    out.E = o.E;
-    out.nu = o.nu;
+                                                 options.schedule, with_gradient(energy, observe));
+    out.E = options.E;
+    out.nu = options.nu;
     out.vertices = body.centre() + 1;
     return out;
 }
 
-Compression3dResult compress3d_shell(const Compression3dOptions& o, const BodyObserver& observe)
+Compression3dResult compress3d_shell(const Compression3dOptions& options, const BodyObserver& observe)
 {
-    const TriangleMesh mesh = compression_mesh(o.mesh);
+    const TriangleMesh mesh = compression_mesh(options.mesh);
     const Eigen::VectorXd x = mesh_coordinates(mesh);
     // A0 = A_min: the mesh's own areas, angles and volume are the rest state (decision dpm-3d-rest-state).
-    const ShapeParameters3d shape = rest_shape_from_mesh(mesh, x, o.kv, o.ka, o.kb, 0.0);
+    const ShapeParameters3d shape = rest_shape_from_mesh(mesh, x, options.kv, options.ka, options.kb, 0.0);
     const BodyEnergy energy = [&shape, &mesh](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return shape_energy3d(shape, mesh, y, 0, gradient, nullptr);
     };
     Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
     shape_energy3d(shape, mesh, x, 0, nullptr, &hessian);
     Compression3dResult out;
-    out.compression = compress_between_plates<3>(x, energy, 1.0, gershgorin_bound(hessian), o.schedule,
+    out.compression = compress_between_plates<3>(x, energy, 1.0, gershgorin_bound(hessian), options.schedule,
                                                  with_gradient(energy, observe));
     // A plate of thickness sigma whose 2D area modulus K_2D = k_a a0 equals E sigma/(2 (1 - nu)), nu = 0.
-    out.E = 2 * o.ka * mean_face_area(mesh);
+    out.E = 2 * options.ka * mean_face_area(mesh);
     out.nu = 0;
     out.vertices = mesh.vertex_count();
     return out;
 }
 
-Compression3dResult compress3d_network(const Compression3dOptions& o, const BodyObserver& observe)
+Compression3dResult compress3d_network(const Compression3dOptions& options, const BodyObserver& observe)
 {
-    const SpringNetwork network = disordered_sphere_network(o.network_nodes, o.cutoff, o.network_k, o.seed);
+    const SpringNetwork network =
+        disordered_sphere_network(options.network_nodes, options.cutoff, options.network_k, options.seed);
     const BodyEnergy energy = [&network](const Eigen::VectorXd& y, Eigen::VectorXd* gradient) {
         return spring_network_energy(network, y, gradient);
     };
@@ -101,7 +102,7 @@ Compression3dResult compress3d_network(const Compression3dOptions& o, const Body
         rows.col(s.j) += row;
     }
     Compression3dResult out;
-    out.compression = compress_between_plates<3>(network.x, energy, 1.0, rows.maxCoeff(), o.schedule,
+    out.compression = compress_between_plates<3>(network.x, energy, 1.0, rows.maxCoeff(), options.schedule,
                                                  with_gradient(energy, observe));
     const double radius = network.x.reshaped(3, network.node_count()).colwise().norm().maxCoeff();
     out.E = affine_network_young_modulus(network, 4.0 / 3.0 * std::numbers::pi * radius * radius * radius);

@@ -26,40 +26,41 @@ double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
     return area / system.box->prod();
 }
 
-JamResult jam(const JamOptions& o)
+JamResult jam(const JamOptions& options)
 {
     const double pi = std::numbers::pi;
     JamResult out;
     DpmSystem& s = out.system;
     s.interaction = InteractionKind::rough;
     s.kc = 1.0;
-    Rng rng(o.seed);
-    const bool disks = o.model == "smooth_disk";
+    Rng rng(options.seed);
+    const bool disks = options.model == "smooth_disk";
     if (disks) {
         double area = 0;
-        for (int m = 0; m < o.particles; ++m)
-            area += 0.25 * pi * std::pow(m < o.particles / 2 ? 1.0 : o.size_ratio, 2);
-        const double L = std::sqrt(area / o.phi_start);
+        for (int m = 0; m < options.particles; ++m)
+            area += 0.25 * pi * std::pow(m < options.particles / 2 ? 1.0 : options.size_ratio, 2);
+        const double L = std::sqrt(area / options.phi_start);
         s.box = Eigen::Vector2d(L, L);
-        for (int m = 0; m < o.particles; ++m) {
+        for (int m = 0; m < options.particles; ++m) {
             Eigen::Matrix2Xd c(2, 1);
             c << rng.uniform(0, L), rng.uniform(0, L);
-            s.add_particle(c, m < o.particles / 2 ? 1.0 : o.size_ratio, ShapeParameters{}, out.x);
+            s.add_particle(c, m < options.particles / 2 ? 1.0 : options.size_ratio, ShapeParameters{}, out.x);
         }
     } else {
         // Vertex diameter sigma = 1; small polygons of N_small vertices with R/sigma such that neighbouring
         // vertices overlap as in Fig. 9.12 (edge = 0.85 sigma); large ones scaled by size_ratio in diameter
         // with N_large vertices (decision dpm-jam-polygons).
-        const bool rigid = o.model == "rough_disk";
-        const ShapeModel model = rigid ? ShapeModel::shell : shape_model_from_name(o.model);
-        const double r_small = 0.85 / (2 * std::sin(pi / o.nodes_small));
-        const double a0_small = 0.5 * o.nodes_small * r_small * r_small * std::sin(2 * pi / o.nodes_small);
+        const bool rigid = options.model == "rough_disk";
+        const ShapeModel model = rigid ? ShapeModel::shell : shape_model_from_name(options.model);
+        const double r_small = 0.85 / (2 * std::sin(pi / options.nodes_small));
+        const double a0_small =
+            0.5 * options.nodes_small * r_small * r_small * std::sin(2 * pi / options.nodes_small);
         std::vector<std::pair<int, double>> kinds;
         double area = 0;
-        for (int m = 0; m < o.particles; ++m) {
-            const bool small = m < o.particles / 2;
-            const int n = small ? o.nodes_small : o.nodes_large;
-            const double r = small ? r_small : o.size_ratio * r_small;
+        for (int m = 0; m < options.particles; ++m) {
+            const bool small = m < options.particles / 2;
+            const int n = small ? options.nodes_small : options.nodes_large;
+            const double r = small ? r_small : options.size_ratio * r_small;
             kinds.push_back({n, r});
             area += std::pow(2 * r + 1.0, 2);
         }
@@ -74,16 +75,17 @@ JamResult jam(const JamOptions& o)
             k.kl = 1.0;
             k.kb = 0.1;
             k.gamma = 0.1 * k.ka * std::pow(a0_small, 1.5);
-            k.kl_surface = o.kl_surface;
-            if (model == ShapeModel::floppy && o.A0_floppy < minimum_shape_parameter(n))
-                throw InputError("A0 = " + std::to_string(o.A0_floppy) +
+            k.kl_surface = options.kl_surface;
+            if (model == ShapeModel::floppy && options.A0_floppy < minimum_shape_parameter(n))
+                throw InputError("A0 = " + std::to_string(options.A0_floppy) +
                                  " of the floppy particles is below A_min(" + std::to_string(n) +
                                  ") = " + std::to_string(minimum_shape_parameter(n)));
-            const double A0 = model == ShapeModel::floppy ? o.A0_floppy : minimum_shape_parameter(n);
+            const double A0 = model == ShapeModel::floppy ? options.A0_floppy : minimum_shape_parameter(n);
             Eigen::Vector2d c;
             for (int tries = 0;; ++tries) {
                 if (tries > 100000)
-                    throw InputError("particles = " + std::to_string(o.particles) + ": no room at the start");
+                    throw InputError("particles = " + std::to_string(options.particles) +
+                                     ": no room at the start");
                 c = Eigen::Vector2d(rng.uniform(0, L), rng.uniform(0, L));
                 bool free = true;
                 for (std::size_t q = 0; q < centres.size(); ++q)
@@ -99,15 +101,15 @@ JamResult jam(const JamOptions& o)
         out.pressure_unit = 1.0 / a0_small; // k_a a0 = (1/a0^2) a0
     }
 
-    const bool rough_disks = o.model == "rough_disk";
-    if (rough_disks && o.relaxation == Relaxation::fire_newton)
+    const bool rough_disks = options.model == "rough_disk";
+    if (rough_disks && options.relaxation == Relaxation::fire_newton)
         throw InputError("relaxation = 'fire_newton' with model = 'rough_disk': rigid polygons relax over "
                          "rigid-body coordinates, with FIRE alone (allowed: fire)");
     FireOptions& fire = out.fire;
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
-    fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
-    const RelaxOptions relax_options{o.relaxation, fire};
+    fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
+    const RelaxOptions relax_options{options.relaxation, fire};
     const auto relax_rigid = [&](long step_index) {
         const FireResult r = relax_rigid_fire(s, out.x, fire);
         out.fire_iterations += r.iterations;
@@ -143,9 +145,10 @@ JamResult jam(const JamOptions& o)
     relax(0);
 
     // Targets: onset, then log-spaced pressures up to pressure_max.
-    const std::vector<double> targets = pressure_targets(o.pressure_onset, o.pressure_max, o.pressures);
+    const std::vector<double> targets =
+        pressure_targets(options.pressure_onset, options.pressure_max, options.pressures);
     BoxSchedule schedule; // Delta L/L = 5e-3 (decision dpm-jam-protocol)
-    schedule.onset = o.pressure_onset;
+    schedule.onset = options.pressure_onset;
     Eigen::VectorXd saved_x;
     Eigen::Vector2d saved_box;
     const CompressiblePacking packing{current_pressure,
@@ -168,7 +171,7 @@ JamResult jam(const JamOptions& o)
     };
     for (double target : targets)
         reach(target, true);
-    if (o.decompress)
+    if (options.decompress)
         for (auto t = targets.rbegin() + 1; t != targets.rend(); ++t)
             reach(*t, false);
     return out;

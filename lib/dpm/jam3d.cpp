@@ -67,15 +67,16 @@ std::vector<Eigen::Vector3d> random_centres(const std::vector<double>& radii, do
 
 } // namespace
 
-Jam3dResult jam3d(const Jam3dOptions& o)
+Jam3dResult jam3d(const Jam3dOptions& options)
 {
-    if (o.particles < 2 || o.particles % 2)
-        throw InputError("particles = " + std::to_string(o.particles) + ": allowed an even number >= 2");
+    if (options.particles < 2 || options.particles % 2)
+        throw InputError("particles = " + std::to_string(options.particles) +
+                         ": allowed an even number >= 2");
     Jam3dResult out;
     DpmSystem3d& s = out.system;
     s.kc = 1.0;
-    s.interaction = o.interaction;
-    s.meshes.push_back(mesh_from_name(o.mesh));
+    s.interaction = options.interaction;
+    s.meshes.push_back(mesh_from_name(options.mesh));
     const TriangleMesh& unit = s.meshes[0]; // vertices on the unit sphere
 
     // Small particles: mean edge 0.85 sigma; large: size_ratio times in diameter (decision
@@ -89,30 +90,31 @@ Jam3dResult jam3d(const Jam3dOptions& o)
     out.pressure_unit = kv * v0;
     out.eigenvalue_unit = kv * std::pow(v0, 4.0 / 3.0);
     Stiffness3d k;
-    k.ka = o.stiffness.ka * kv * std::pow(v0, 2.0 / 3.0);
-    k.kb = o.stiffness.kb * kv * v0 * v0;
-    k.gamma = o.stiffness.gamma * kv * std::pow(v0, 5.0 / 3.0);
+    k.ka = options.stiffness.ka * kv * std::pow(v0, 2.0 / 3.0);
+    k.kb = options.stiffness.kb * kv * v0 * v0;
+    k.gamma = options.stiffness.gamma * kv * std::pow(v0, 5.0 / 3.0);
     const auto rest_shape = [&](double r) {
         const Eigen::VectorXd xr = r * mesh_coordinates(unit);
         const double A_mesh = mesh_shape_parameter3d(unit, xr, 0);
-        return model_shape3d(o.model, unit, xr, o.model == ShapeModel::floppy ? o.A0_floppy : A_mesh, kv, k);
+        return model_shape3d(options.model, unit, xr,
+                             options.model == ShapeModel::floppy ? options.A0_floppy : A_mesh, kv, k);
     };
     const ShapeParameters3d small_shape = rest_shape(r_small),
-                            large_shape = rest_shape(o.size_ratio * r_small);
+                            large_shape = rest_shape(options.size_ratio * r_small);
 
     std::vector<double> radii;
     double boxes = 0;
-    for (int m = 0; m < o.particles; ++m) {
-        radii.push_back(m < o.particles / 2 ? r_small : o.size_ratio * r_small);
+    for (int m = 0; m < options.particles; ++m) {
+        radii.push_back(m < options.particles / 2 ? r_small : options.size_ratio * r_small);
         boxes += std::pow(2 * radii.back() + 1.0, 3);
     }
-    const double L = std::cbrt(boxes / o.start_fraction);
+    const double L = std::cbrt(boxes / options.start_fraction);
     s.box = L;
-    Rng rng(o.seed);
+    Rng rng(options.seed);
     const std::vector<Eigen::Vector3d> centres = random_centres(radii, L, rng);
-    for (int m = 0; m < o.particles; ++m) {
+    for (int m = 0; m < options.particles; ++m) {
         const Eigen::Matrix3Xd v = (radii[m] * random_rotation(rng) * unit.vertices).colwise() + centres[m];
-        s.add_particle(0, v, 1.0, m < o.particles / 2 ? small_shape : large_shape, out.x);
+        s.add_particle(0, v, 1.0, m < options.particles / 2 ? small_shape : large_shape, out.x);
     }
 
     // FIRE: time step from the stiffest mode at the start (as in 2D), tolerance 1e-4 P_t (in k_c sigma).
@@ -124,8 +126,8 @@ Jam3dResult jam3d(const Jam3dOptions& o)
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff());
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(stiffest));
     fire.dt_initial = 0.25 * fire.dt_max;
-    fire.force_tolerance = 1e-4 * o.pressure_onset * out.pressure_unit;
-    fire.max_iterations = o.fire_budget;
+    fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
+    fire.max_iterations = options.fire_budget;
     const auto relax = [&](long step_index) {
         const FireResult r = relax_fire3d(s, out.x, fire);
         out.fire_iterations += r.iterations;
@@ -148,13 +150,13 @@ Jam3dResult jam3d(const Jam3dOptions& o)
                                                   Eigen::MatrixXd* hessian) {
             return total_energy3d(s, y, gradient, hessian);
         };
-        return dpm::leave_saddle(energy, out.x, out.pressure_unit, out.eigenvalue_unit, o.zero_threshold,
-                                 0.1);
+        return dpm::leave_saddle(energy, out.x, out.pressure_unit, out.eigenvalue_unit,
+                                 options.zero_threshold, 0.1);
     };
 
     BoxSchedule schedule;
-    schedule.onset = o.pressure_onset;
-    schedule.jump_step = o.jump_step;
+    schedule.onset = options.pressure_onset;
+    schedule.jump_step = options.jump_step;
     Eigen::VectorXd saved_x;
     double saved_box = L;
     const CompressiblePacking packing{current_pressure,
@@ -169,8 +171,8 @@ Jam3dResult jam3d(const Jam3dOptions& o)
                                           *s.box = saved_box;
                                       },
                                       leave_saddle};
-    for (double target : pressure_targets(o.pressure_onset, o.pressure_max, o.pressures)) {
-        reach_stable_pressure(target, schedule, packing, o.saddle_escapes, out.saddle_escapes);
+    for (double target : pressure_targets(options.pressure_onset, options.pressure_max, options.pressures)) {
+        reach_stable_pressure(target, schedule, packing, options.saddle_escapes, out.saddle_escapes);
         out.states.push_back({packing_fraction3d(s, out.x), current_pressure(), out.x, *s.box});
         if (out.states.size() == 1) out.box_steps = schedule.step_index;
     }

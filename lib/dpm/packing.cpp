@@ -10,34 +10,34 @@
 
 namespace softgrain::dpm {
 
-Packing jam_packing(const PackingOptions& o)
+Packing jam_packing(const PackingOptions& options)
 {
-    const double pi = std::numbers::pi, sigma = 1.0, R = o.C * sigma;
-    const int n = o.nodes;
+    const double pi = std::numbers::pi, sigma = 1.0, R = options.C * sigma;
+    const int n = options.nodes;
     const double a0 = 0.5 * n * R * R * std::sin(2 * pi / n);
     ShapeStiffness k;
-    k.ka = o.ka * sigma * sigma / (a0 * a0);
-    k.kl = o.kl;
-    k.kb = o.kb * sigma * sigma;
+    k.ka = options.ka * sigma * sigma / (a0 * a0);
+    k.kl = options.kl;
+    k.kb = options.kb * sigma * sigma;
     const ShapeParameters shape =
-        table_9_1_parameters(o.model, n, a0, o.A0.value_or(minimum_shape_parameter(n)), k);
+        table_9_1_parameters(options.model, n, a0, options.A0.value_or(minimum_shape_parameter(n)), k);
 
     Packing out;
     DpmSystem& s = out.system;
-    s.interaction = o.interaction;
+    s.interaction = options.interaction;
     s.kc = 1.0;
-    const double L = std::sqrt(o.particles * a0 / o.phi_start);
+    const double L = std::sqrt(options.particles * a0 / options.phi_start);
     s.box = Eigen::Vector2d(L, L);
-    Rng rng(o.seed);
+    Rng rng(options.seed);
     std::vector<Eigen::Vector2d> centres;
     const double exclusion = 2 * R + sigma;
-    for (int m = 0; m < o.particles; ++m) {
+    for (int m = 0; m < options.particles; ++m) {
         Eigen::Vector2d c;
         int tries = 0;
         bool free = false;
         while (!free) {
             if (++tries > 100000)
-                throw InputError("phi_start = " + std::to_string(o.phi_start) +
+                throw InputError("phi_start = " + std::to_string(options.phi_start) +
                                  ": no room to place the particles without overlap; lower it");
             c = Eigen::Vector2d(rng.uniform(0, L), rng.uniform(0, L));
             free = true;
@@ -64,8 +64,8 @@ Packing jam_packing(const PackingOptions& o)
             throw NumericalError("relaxation during compression (" + fire_shortfall(r, fire) + ")",
                                  out.compression_steps,
                                  "too large a compression step for the FIRE time step");
-        const double per_particle = r.energy / o.particles;
-        if (per_particle > 2 * o.energy_onset) { // overshoot: undo and halve the step
+        const double per_particle = r.energy / options.particles;
+        if (per_particle > 2 * options.energy_onset) { // overshoot: undo and halve the step
             out.x = saved_x;
             *s.box = saved_box;
             step *= 0.5;
@@ -74,7 +74,7 @@ Packing jam_packing(const PackingOptions& o)
                                      out.compression_steps, "energy_onset window too narrow for round-off");
             continue;
         }
-        if (per_particle > o.energy_onset) return out;
+        if (per_particle > options.energy_onset) return out;
     }
     throw NumericalError("jamming onset not reached", max_steps,
                          "phi_start too low or onset energy too high");

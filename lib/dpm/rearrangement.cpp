@@ -45,11 +45,13 @@ NetworkChange compare_networks(const ContactNetwork& before, const ContactNetwor
     return change;
 }
 
-RearrangementResult find_rearrangement(const RearrangementOptions& o, const RearrangementObserver& observe)
+RearrangementResult find_rearrangement(const RearrangementOptions& options,
+                                       const RearrangementObserver& observe)
 {
-    if (o.jam.model != "smooth_disk")
-        throw InputError("model = " + o.jam.model + ": the rearrangement search is for smooth_disk packings");
-    JamOptions onset_only = o.jam;
+    if (options.jam.model != "smooth_disk")
+        throw InputError("model = " + options.jam.model +
+                         ": the rearrangement search is for smooth_disk packings");
+    JamOptions onset_only = options.jam;
     onset_only.pressures = 0; // stop at the onset P_t
     JamResult jammed = jam(onset_only);
     RearrangementResult out;
@@ -59,15 +61,16 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o, const Rear
     DpmSystem& s = out.system;
     // A contact force must exceed the FIRE residual by a decade to count (decision
     // dpm-rearrangement-contact).
-    out.min_overlap = o.min_overlap > 0 ? o.min_overlap : 10 * jammed.fire.force_tolerance / s.kc;
+    out.min_overlap = options.min_overlap > 0 ? options.min_overlap : 10 * jammed.fire.force_tolerance / s.kc;
 
     const auto relax = [&](Eigen::VectorXd& x, int step) {
         const FireResult r = relax_fire(s, x, jammed.fire);
         out.fire_iterations += r.iterations;
         if (!r.converged)
-            throw NumericalError("relaxation after a compression step of Delta phi = " +
-                                     std::to_string(o.dphi) + " (" + fire_shortfall(r, jammed.fire) + ")",
-                                 step, "force tolerance too small for the pressure; raise pressure_onset");
+            throw NumericalError(
+                "relaxation after a compression step of Delta phi = " + std::to_string(options.dphi) + " (" +
+                    fire_shortfall(r, jammed.fire) + ")",
+                step, "force tolerance too small for the pressure; raise pressure_onset");
     };
     const auto state_of = [&](const Eigen::VectorXd& x) {
         return PackingState{packing_fraction(s, x), pressure(stress_tensor(s, x)) / jammed.pressure_unit, x,
@@ -82,9 +85,9 @@ RearrangementResult find_rearrangement(const RearrangementOptions& o, const Rear
     out.phi_c = current.phi;
     out.previous = current;
     if (observe) observe(0, s, current, false, false);
-    for (int step = 1; step <= o.max_steps; ++step) {
+    for (int step = 1; step <= options.max_steps; ++step) {
         Eigen::VectorXd x = current.x;
-        compress_by(x, current.phi, o.dphi);
+        compress_by(x, current.phi, options.dphi);
         relax(x, step);
         PackingState next = state_of(x);
         if (next.contacts != current.contacts) {

@@ -150,38 +150,40 @@ RestResult run_to_rest(const DpmSystem& s, const SlumpWorld& world, Eigen::Vecto
                          "rest_tolerance");
 }
 
-SlumpResult run_slump(const SlumpOptions& o, const SlumpObserver& observe)
+SlumpResult run_slump(const SlumpOptions& options, const SlumpObserver& observe)
 {
     const double pi = std::numbers::pi, ratio = 1.4;
     SlumpResult out;
     DpmSystem& s = out.system;
-    s.interaction = o.interaction;
+    s.interaction = options.interaction;
     s.kc = 1.0;
-    const double r_small = 0.85 * sigma / (2 * std::sin(pi / o.nodes_small));
+    const double r_small = 0.85 * sigma / (2 * std::sin(pi / options.nodes_small));
     const double d_small = 2 * r_small + sigma, d_large = ratio * d_small;
-    const double a0_small = 0.5 * o.nodes_small * r_small * r_small * std::sin(2 * pi / o.nodes_small);
+    const double a0_small =
+        0.5 * options.nodes_small * r_small * r_small * std::sin(2 * pi / options.nodes_small);
     const double ka = 1.0 / (a0_small * a0_small);
-    const ShellType types[2] = {shell_type(o.nodes_small, r_small, ka),
-                                shell_type(o.nodes_large, 0.5 * (d_large - sigma), ka)};
+    const ShellType types[2] = {shell_type(options.nodes_small, r_small, ka),
+                                shell_type(options.nodes_large, 0.5 * (d_large - sigma), ka)};
     out.diameter = 0.5 * (d_small + d_large);
-    out.box_width = o.box_width * out.diameter;
+    out.box_width = options.box_width * out.diameter;
     // Placement (decision dpm-slump-protocol): a shuffled 50:50 sequence of sizes on a square grid of cells
     // 1.05 D_large wide, filled row by row from the floor, random orientation and a small random offset.
     const double cell = 1.05 * d_large;
     const int columns = static_cast<int>(std::floor(out.box_width / cell));
     if (columns < 1)
-        throw InputError("box_width = " + std::to_string(o.box_width) +
+        throw InputError("box_width = " + std::to_string(options.box_width) +
                          ": narrower than one large particle (" + std::to_string(d_large / out.diameter) +
                          " D)");
-    Rng rng(o.seed);
-    std::vector<int> kinds(o.particles);
-    for (int m = 0; m < o.particles; ++m)
+    Rng rng(options.seed);
+    std::vector<int> kinds(options.particles);
+    for (int m = 0; m < options.particles; ++m)
         kinds[m] = m % 2;
-    for (int m = o.particles - 1; m > 1; --m) // Fisher-Yates on all but the first two (one of each type)
+    for (int m = options.particles - 1; m > 1;
+         --m) // Fisher-Yates on all but the first two (one of each type)
         std::swap(kinds[m], kinds[2 + static_cast<int>(rng.uniform() * (m - 1))]);
     const double margin = 0.5 * (out.box_width - columns * cell);
     Eigen::VectorXd x;
-    for (int m = 0; m < o.particles; ++m) {
+    for (int m = 0; m < options.particles; ++m) {
         const ShellType& t = types[kinds[m]];
         const double jitter = 0.5 * (cell - (kinds[m] ? d_large : d_small));
         const Eigen::Vector2d c(margin + cell * (m % columns + 0.5) + rng.uniform(-jitter, jitter),
@@ -189,16 +191,17 @@ SlumpResult run_slump(const SlumpOptions& o, const SlumpObserver& observe)
         s.add_particle(regular_polygon(t.nodes, t.radius, c, rng.uniform(0, 2 * pi)), sigma, t.shape, x);
     }
     out.dt = slump_time_step(s, x);
-    SlumpWorld world{o.gravity, o.wall_friction, o.tangential_stiffness, o.damping, out.box_width, true};
+    SlumpWorld world{options.gravity, options.wall_friction, options.tangential_stiffness,
+                     options.damping, out.box_width,         true};
     Eigen::VectorXd v = Eigen::VectorXd::Zero(x.size());
     FloorContacts floor;
     if (observe) observe(s, world, x, v, 0, 0.0);
-    out.confined.rest =
-        run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "confined", observe);
+    out.confined.rest = run_to_rest(s, world, x, v, floor, out.dt, options.rest_tolerance, options.max_steps,
+                                    "confined", observe);
     out.confined.x = x;
     world.right_wall = std::numeric_limits<double>::infinity(); // the right wall is removed
-    out.released.rest = run_to_rest(s, world, x, v, floor, out.dt, o.rest_tolerance, o.max_steps, "released",
-                                    observe, out.confined.rest.steps);
+    out.released.rest = run_to_rest(s, world, x, v, floor, out.dt, options.rest_tolerance, options.max_steps,
+                                    "released", observe, out.confined.rest.steps);
     out.released.x = x;
     return out;
 }

@@ -38,28 +38,29 @@ double l_block_pulse(double t)
     return std::max(2.5 - std::abs(t - 2.5), 0.0);
 }
 
-LBlockResult run_l_block(const LBlockSetup& s, long stride,
+LBlockResult run_l_block(const LBlockSetup& setup, long stride,
                          const std::function<void(const LBlockSample&, const Points<3>&)>& observe,
                          const StepObserver& on_step)
 {
     const Domain domain = l_block_domain(arm, height, thickness);
-    const Points<3> X = l_block_lattice(s.spacing);
+    const Points<3> X = l_block_lattice(setup.spacing);
     BoundaryConditions bc;
     bc.kind.assign(3, BoundaryKind::free); // labels: 0 face X1 = 6, 1 face X2 = 10, 2 the rest
-    const Vec3 load = s.load;
+    const Vec3 load = setup.load;
     bc.traction = [load](int label, const Vec3&, double t) {
         const double p = l_block_pulse(t);
         return Vec3(label == 0 ? Vec3(p * load) : label == 1 ? Vec3(-p * load) : Vec3::Zero());
     };
-    const Model model(build_reference_cells(X, domain, 2 * s.spacing), domain, bc, s.material, s.options);
+    const Model model(build_reference_cells(X, domain, 2 * setup.spacing), domain, bc, setup.material,
+                      setup.options);
 
-    const double dt_limit = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
+    const double dt_limit = setup.cfl * model.min_branch_length() / setup.material.p_wave_speed();
     // An integer number of steps to the end of loading, so that t = 5 s is a sample time.
     const long load_steps = static_cast<long>(std::ceil(load_end / dt_limit));
     const double dt = load_end / static_cast<double>(load_steps);
-    const long steps = static_cast<long>(std::ceil(s.end_time / dt));
+    const long steps = static_cast<long>(std::ceil(setup.end_time / dt));
     Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
-                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
+                        setup.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
 
     const auto sample = [&]() {
         const Points<3> x = integrator.positions();

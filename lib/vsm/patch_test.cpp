@@ -18,23 +18,23 @@ Mat3 patch_displacement_gradient(double alpha)
     return alpha * M;
 }
 
-PatchResult run_patch_test(const PatchSetup& s, const PatchObserver& observe)
+PatchResult run_patch_test(const PatchSetup& setup, const PatchObserver& observe)
 {
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Ones());
-    Rng rng(s.seed);
-    const int n = s.per_side;
-    const Points<3> X = jittered_lattice(Vec3::Zero(), Vec3::Ones(), {n, n, n}, s.jitter, &rng);
+    Rng rng(setup.seed);
+    const int n = setup.per_side;
+    const Points<3> X = jittered_lattice(Vec3::Zero(), Vec3::Ones(), {n, n, n}, setup.jitter, &rng);
     const double h = 1.0 / n;
-    const Mat3 G = patch_displacement_gradient(s.alpha);
-    const LameParameters lame = s.material.lame();
+    const Mat3 G = patch_displacement_gradient(setup.alpha);
+    const LameParameters lame = setup.material.lame();
     // Loads are ramped linearly, r(t) = min(t / ramp_time, 1); at every r the homogeneous state F = I + r G
     // is the exact solution, so the traction follows it: T = P(I + r G) N.
-    const bool static_test = s.variant == PatchVariant::A;
-    const auto ramp = [&](double t) { return static_test ? 1.0 : std::min(t / s.ramp_time, 1.0); };
+    const bool static_test = setup.variant == PatchVariant::A;
+    const auto ramp = [&](double t) { return static_test ? 1.0 : std::min(t / setup.ramp_time, 1.0); };
 
     BoundaryConditions bc;
     bc.displacement = [&](int, const Vec3& W, double t) { return Vec3(ramp(t) * (G * W)); };
-    if (s.variant == PatchVariant::C) {
+    if (setup.variant == PatchVariant::C) {
         bc.kind.assign(6, BoundaryKind::free);
         bc.kind[4] = BoundaryKind::total; // X3 = 0
         bc.traction = [&](int label, const Vec3&, double t) {
@@ -44,12 +44,12 @@ PatchResult run_patch_test(const PatchSetup& s, const PatchObserver& observe)
     } else {
         bc.kind.assign(6, BoundaryKind::total);
     }
-    const Model model(build_reference_cells(X, domain, 2.0 * h), domain, bc, s.material, s.options);
+    const Model model(build_reference_cells(X, domain, 2.0 * h), domain, bc, setup.material, setup.options);
 
     PatchResult result;
     result.X = X;
     result.particles = static_cast<int>(model.size());
-    result.force_scale = s.material.young * s.alpha * h * h;
+    result.force_scale = setup.material.young * setup.alpha * h * h;
     const Points<3> exact = X + G * X;
     const auto max_column_norm = [](const Points<3>& p) { return p.colwise().norm().maxCoeff(); };
     if (static_test) {
@@ -57,10 +57,10 @@ PatchResult run_patch_test(const PatchSetup& s, const PatchObserver& observe)
         if (observe) observe({model, exact, Points<3>::Zero(3, X.cols()), 0.0, 0, 1.0, true});
         return result;
     }
-    const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
-    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, s.damping,
-                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
-    const long steps = static_cast<long>(std::ceil((s.ramp_time + s.hold_time) / dt));
+    const double dt = setup.cfl * model.min_branch_length() / setup.material.p_wave_speed();
+    Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, setup.damping,
+                        setup.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
+    const long steps = static_cast<long>(std::ceil((setup.ramp_time + setup.hold_time) / dt));
     const auto state = [&](bool final) {
         const double t = integrator.state().t;
         observe({model, integrator.positions(), integrator.half_step_velocities(), t, integrator.state().step,

@@ -72,39 +72,40 @@ Domain punch_domain(double w, double h, double th)
     return d;
 }
 
-PunchResult run_punch(const PunchSetup& s, const std::function<void(const PunchSnapshot&)>& observe,
+PunchResult run_punch(const PunchSetup& setup, const std::function<void(const PunchSnapshot&)>& observe,
                       const StepObserver& on_step)
 {
-    if (s.counts[0] % 3 != 0)
-        throw InputError("per_side_x = " + std::to_string(s.counts[0]) +
+    if (setup.counts[0] % 3 != 0)
+        throw InputError("per_side_x = " + std::to_string(setup.counts[0]) +
                          " must be divisible by 3 (the punch covers the middle third)");
-    if (s.snapshot_strains.empty()) throw InputError("no snapshot strain");
+    if (setup.snapshot_strains.empty()) throw InputError("no snapshot strain");
     const Domain domain = punch_domain(width, height, thickness);
-    Rng rng(s.seed);
+    Rng rng(setup.seed);
     const Points<3> X =
-        jittered_lattice(Vec3::Zero(), Vec3(width, height, thickness), s.counts, s.jitter, &rng);
+        jittered_lattice(Vec3::Zero(), Vec3(width, height, thickness), setup.counts, setup.jitter, &rng);
     BoundaryConditions bc;
     bc.kind = {BoundaryKind::symmetric, BoundaryKind::symmetric, BoundaryKind::symmetric, BoundaryKind::free,
                BoundaryKind::symmetric, BoundaryKind::symmetric, BoundaryKind::total};
-    const double velocity = s.punch_velocity;
+    const double velocity = setup.punch_velocity;
     // The punch (label 6) moves down; symmetric faces prescribe a zero normal displacement.
     bc.displacement = [velocity](int label, const Vec3&, double t) {
         return label == punch_label ? Vec3(0, -velocity * t, 0) : Vec3::Zero();
     };
-    const double spacing =
-        (Vec3(width, height, thickness).array() / Eigen::Array3d(s.counts[0], s.counts[1], s.counts[2]))
-            .maxCoeff();
-    const Model model(build_reference_cells(X, domain, 2 * spacing), domain, bc, s.material, s.options);
+    const double spacing = (Vec3(width, height, thickness).array() /
+                            Eigen::Array3d(setup.counts[0], setup.counts[1], setup.counts[2]))
+                               .maxCoeff();
+    const Model model(build_reference_cells(X, domain, 2 * spacing), domain, bc, setup.material,
+                      setup.options);
 
-    const double dt = s.cfl * model.min_branch_length() / s.material.p_wave_speed();
+    const double dt = setup.cfl * model.min_branch_length() / setup.material.p_wave_speed();
     Leapfrog integrator(model, X, Points<3>::Zero(3, X.cols()), dt, 0.0,
-                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
+                        setup.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     PunchResult r;
     r.particles = static_cast<int>(X.cols());
     r.dt = dt;
     r.dt_limit = predicted_time_step_limit(model);
     if (on_step) on_step(model, integrator);
-    for (double strain : s.snapshot_strains) {
+    for (double strain : setup.snapshot_strains) {
         const double t_snapshot = strain * height / velocity;
         while (integrator.state().t + 0.5 * dt < t_snapshot) {
             integrator.step();

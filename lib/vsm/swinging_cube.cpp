@@ -86,16 +86,16 @@ SwingingCubeError measure_error(const SwingingCube& cube, const Points<3>& X, co
 
 } // namespace
 
-Points<3> swinging_cube_particles(const SwingingCubeSetup& s)
+Points<3> swinging_cube_particles(const SwingingCubeSetup& setup)
 {
-    Rng rng(s.seed);
-    const int n = s.per_side;
-    return jittered_lattice(Vec3::Zero(), Vec3::Constant(s.cube.length), {n, n, n}, s.jitter, &rng);
+    Rng rng(setup.seed);
+    const int n = setup.per_side;
+    return jittered_lattice(Vec3::Zero(), Vec3::Constant(setup.cube.length), {n, n, n}, setup.jitter, &rng);
 }
 
-Model swinging_cube_model(const SwingingCubeSetup& s, const Points<3>& X)
+Model swinging_cube_model(const SwingingCubeSetup& setup, const Points<3>& X)
 {
-    const double L = s.cube.length;
+    const double L = setup.cube.length;
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Constant(L));
     BoundaryConditions bc;
     // Labels 0, 2, 4: X_i = 0 (symmetric); 1, 3, 5: X_i = L (antisymmetric); the prescribed components are
@@ -103,51 +103,52 @@ Model swinging_cube_model(const SwingingCubeSetup& s, const Points<3>& X)
     bc.kind = {BoundaryKind::symmetric,     BoundaryKind::antisymmetric, BoundaryKind::symmetric,
                BoundaryKind::antisymmetric, BoundaryKind::symmetric,     BoundaryKind::antisymmetric};
     bc.displacement = [](int, const Vec3&, double) { return Vec3::Zero(); };
-    return Model(build_reference_cells(X, domain, 2.0 * L / s.per_side), domain, bc, s.cube.material,
-                 s.options);
+    return Model(build_reference_cells(X, domain, 2.0 * L / setup.per_side), domain, bc, setup.cube.material,
+                 setup.options);
 }
 
-SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& s,
+SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
                                      const std::function<void(const SwingingCubeError&)>& observe,
                                      int samples, const StepObserver& on_step)
 {
-    const double spacing = s.cube.length / s.per_side;
-    const Points<3> X = swinging_cube_particles(s);
-    const Model model = swinging_cube_model(s, X);
+    const double spacing = setup.cube.length / setup.per_side;
+    const Points<3> X = swinging_cube_particles(setup);
+    const Model model = swinging_cube_model(setup, X);
 
     Points<3> x0 = X;
     for (Eigen::Index a = 0; a < X.cols(); ++a)
-        x0.col(a) += s.cube.displacement(X.col(a), 0.0);
-    const long steps = static_cast<long>(
-        std::ceil(s.end_time / (s.cfl * model.min_branch_length() / s.cube.material.p_wave_speed())));
-    const double dt = s.end_time / static_cast<double>(steps);
+        x0.col(a) += setup.cube.displacement(X.col(a), 0.0);
+    const long steps = static_cast<long>(std::ceil(
+        setup.end_time / (setup.cfl * model.min_branch_length() / setup.cube.material.p_wave_speed())));
+    const double dt = setup.end_time / static_cast<double>(steps);
     SwingingCubeResult r;
     r.initial_von_mises.reserve(static_cast<std::size_t>(X.cols()));
     double vm_error2 = 0, vm_norm2 = 0;
     for (const Mat3& F : model.deformation_gradients(x0, 0.0)) {
         const Eigen::Index a = static_cast<Eigen::Index>(r.initial_von_mises.size());
-        const double vm = von_mises_stress(neo_hookean_cauchy_stress(F, s.cube.material.lame()));
-        const Mat3 F_exact = Mat3::Identity() + s.cube.displacement_gradient(X.col(a), 0.0);
-        const double vm_exact = von_mises_stress(neo_hookean_cauchy_stress(F_exact, s.cube.material.lame()));
+        const double vm = von_mises_stress(neo_hookean_cauchy_stress(F, setup.cube.material.lame()));
+        const Mat3 F_exact = Mat3::Identity() + setup.cube.displacement_gradient(X.col(a), 0.0);
+        const double vm_exact =
+            von_mises_stress(neo_hookean_cauchy_stress(F_exact, setup.cube.material.lame()));
         r.initial_von_mises.push_back(vm);
         vm_error2 += (vm - vm_exact) * (vm - vm_exact);
         vm_norm2 += vm_exact * vm_exact;
     }
     r.initial_von_mises_error_l2 = std::sqrt(vm_error2 / vm_norm2);
     Leapfrog integrator(model, x0, Points<3>::Zero(3, X.cols()), dt, 0.0,
-                        s.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
+                        setup.time_step_check ? TimeStepCheck::refuse_above_limit : TimeStepCheck::off);
     const long stride = samples > 0 ? std::max(1L, steps / samples) : 0;
-    if (observe) observe(measure_error(s.cube, X, x0, 0.0, spacing));
+    if (observe) observe(measure_error(setup.cube, X, x0, 0.0, spacing));
     if (on_step) on_step(model, integrator);
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
         if (on_step) on_step(model, integrator);
         if (observe && stride > 0 && (k % stride == 0 || k == steps))
-            observe(measure_error(s.cube, X, integrator.positions(), integrator.state().t, spacing));
+            observe(measure_error(setup.cube, X, integrator.positions(), integrator.state().t, spacing));
     }
 
     r.X = X;
-    r.error = measure_error(s.cube, X, integrator.positions(), integrator.state().t, spacing);
+    r.error = measure_error(setup.cube, X, integrator.positions(), integrator.state().t, spacing);
     r.displacement_error_l2 = r.error.l2;
     r.spacing = spacing;
     r.dt = dt;
