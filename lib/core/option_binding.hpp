@@ -25,6 +25,7 @@
 #pragma once
 
 #include "core/parameters.hpp"
+#include "core/resources.hpp"
 #include "core/scene.hpp"
 
 #include <concepts>
@@ -194,16 +195,36 @@ class OptionBinding
     // spec), then the cross-parameter checks.
     Options read(const Parameters& p) const
     {
-        Options options = defaults_;
-        for (std::size_t k = 0; k < specs_.size(); ++k)
-            readers_[k](p, specs_[k].name, options);
+        Options options = filled(p);
         for (const Check& cross_check : checks_)
             cross_check(options);
         return options;
     }
 
+    // The run's memory estimate (Scene::needing) from the filled options, so that it reads each parameter
+    // through its binding rather than by name again:
+    // scene.needing(binding.estimate([](const Options& options) { return ...; })).
+    // The cross-parameter checks are left to the run: an absurd size is refused for its memory first, as
+    // before any other check.
+    template <class Estimate>
+    std::function<MemoryEstimate(const Parameters&)> estimate(Estimate of_options) const
+    {
+        return [binding = *this, of_options](const Parameters& parameters) {
+            return of_options(binding.filled(parameters));
+        };
+    }
+
   private:
     using Reader = std::function<void(const Parameters&, const std::string&, Options&)>;
+
+    // The defaults with each bound field read from `p`.
+    Options filled(const Parameters& p) const
+    {
+        Options options = defaults_;
+        for (std::size_t k = 0; k < specs_.size(); ++k)
+            readers_[k](p, specs_[k].name, options);
+        return options;
+    }
 
     template <class F>
     auto default_of(F field) const

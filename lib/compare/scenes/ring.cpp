@@ -184,11 +184,12 @@ Scene ring_scene()
                      "vertices N of the ring",
                      "force_error_max",
                      "largest |F/F_elastica - 1| over eps = 0.1 ... 0.6 (h/R = 0.005)"})
-        .needing([](const Parameters& parameters) {
-            const double n = static_cast<double>(parameters.integer("nodes"));
-            return parameters.choice("model") == "spd" ? spd::shell_model_memory(n, "vertices (nodes)")
-                                                       : dpm::dpm_vertex_memory(n, "vertices (nodes)");
-        })
+        .needing(ring_binding().estimate([](const RingOptions& options) {
+            const double n = options.comparison.nodes;
+            return options.comparison.method == RingMethod::spd
+                       ? spd::shell_model_memory(n, "vertices (nodes)")
+                       : dpm::dpm_vertex_memory(n, "vertices (nodes)");
+        }))
         .with_vtk();
 }
 

@@ -181,15 +181,12 @@ void run_bench(const BenchOptions& options, RunContext& context)
 }
 
 // The dense spectrum of the jammed packing: two n x n matrices, n = dimension x vertices.
-MemoryEstimate bench_memory(const Parameters& p)
+MemoryEstimate bench_memory(const BenchOptions& options)
 {
-    const double particles = static_cast<double>(p.integer("particles"));
-    const double nodes = 0.5 * static_cast<double>(p.integer("nodes_small") + p.integer("nodes_large"));
-    const double dimension = static_cast<double>(p.integer("dimension"));
-    const bool disks = p.choice("model") == "smooth_disk";
-    return dense_matrix_memory(dimension * particles * (disks ? 1.0 : nodes), 2,
-                               disks ? "dimension x particles"
-                                     : "dimension x particles x (nodes_small + nodes_large) / 2");
+    const BidispersePacking packing = bidisperse_packing(options.jam);
+    return dense_matrix_memory(options.dimension * bidisperse_vertices(packing), 2,
+                               packing.disks ? "dimension x particles"
+                                             : "dimension x particles x (nodes_small + nodes_large) / 2");
 }
 
 } // namespace
@@ -201,7 +198,7 @@ Scene bench_scene()
                        "protocol, and of its dense spectrum: time, FIRE iterations, force evaluations per "
                        "second (make bench)",
                        bench_binding(), run_bench)
-        .needing(bench_memory)
+        .needing(bench_binding().estimate(bench_memory))
         .without_vtk("a timed scene: writing frames would change the time it measures; "
                      "dpm.jam and dpm.modes3d draw the packings it times");
 }

@@ -195,11 +195,11 @@ Scene boundary_jam_scene()
                        "DPM Fig. 9.18(a-e): jammed packings of 4 disks inside a floppy deformable boundary, "
                        "distinct packings by contacts and parallelogram angle",
                        boundary_jam_binding(), run_boundary_jam)
-        .needing([](const Parameters& p) {
+        .needing(boundary_jam_binding().estimate([](const BoundaryJamSceneOptions& options) {
             // The boundary's dense Hessian (4 disks beside it).
-            return dense_matrix_memory(2 * static_cast<double>(p.integer("boundary_nodes")) + 12, 1,
+            return dense_matrix_memory(2.0 * options.boundary.boundary_nodes + 12, 1,
                                        "2 x boundary_nodes + 12");
-        })
+        }))
         .with_vtk();
 }
 

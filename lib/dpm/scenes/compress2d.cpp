@@ -155,12 +155,11 @@ Scene compress2d_scene()
                        "DPM sec. 9.3.4: an elastic shell or a spring-network disk compressed between two "
                        "plates, F_a against delta/D, its small-strain exponent and eq. (9.14) (Fig. 9.10)",
                        compress2d_binding(), run_compress2d)
-        .needing([](const Parameters& p) {
-            return p.choice("model") == "shell"
-                       ? dpm_vertex_memory(static_cast<double>(p.integer("nodes")), "vertices (nodes)")
-                       : dpm_vertex_memory(static_cast<double>(p.integer("network_nodes")),
-                                           "nodes (network_nodes)");
-        })
+        .needing(compress2d_binding().estimate([](const Compress2dOptions& options) {
+            return options.body == Compress2dBody::shell
+                       ? dpm_vertex_memory(options.compression.nodes, "vertices (nodes)")
+                       : dpm_vertex_memory(options.compression.network_nodes, "nodes (network_nodes)");
+        }))
         .with_vtk();
 }
 

@@ -58,11 +58,11 @@ struct Compress3dOptions
     // The scene's defaults where they differ from the library's.
     static Compression3dOptions scene_compression_defaults()
     {
-        Compression3dOptions o;
-        o.schedule.delta_min = 1e-3;
-        o.schedule.steps = 24;
-        o.schedule.force_tolerance = 1e-8;
-        return o;
+        Compression3dOptions defaults;
+        defaults.schedule.delta_min = 1e-3;
+        defaults.schedule.steps = 24;
+        defaults.schedule.force_tolerance = 1e-8;
+        return defaults;
     }
 };
 
@@ -81,56 +81,72 @@ OptionBinding<Compress3dOptions> compress3d_binding()
     const auto schedule = [](auto field) {
         return path(&Compress3dOptions::compression, &Compression3dOptions::schedule, field);
     };
-    OptionBinding<Compress3dOptions> b;
-    b.choice(&Compress3dOptions::body, "model",
-             {{"tetrahedra", Compress3dBody::tetrahedra},
-              {"shell", Compress3dBody::shell},
-              {"spring_network", Compress3dBody::spring_network}},
-             "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
-             "eq. 9.2) or spring-network ball (Fig. 9.11a)");
-    b.word(body(&Compression3dOptions::mesh), "mesh",
-           {"icosahedron", "geodesic42", "geodesic162", "geodesic642", "geodesic2562"},
-           "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642, 2562; paper's shell: 162)");
-    b.real(body(&Compression3dOptions::E), "E", "k_c/sigma",
-           "tetrahedra: Young's modulus of each tetrahedron")
+    OptionBinding<Compress3dOptions> binding;
+    binding.choice(&Compress3dOptions::body, "model",
+                   {{"tetrahedra", Compress3dBody::tetrahedra},
+                    {"shell", Compress3dBody::shell},
+                    {"spring_network", Compress3dBody::spring_network}},
+                   "elastic tetrahedra (Fig. 9.11c, eqs. 9.15-9.17), elastic shell (Fig. 9.11b, "
+                   "eq. 9.2) or spring-network ball (Fig. 9.11a)");
+    binding.word(body(&Compression3dOptions::mesh), "mesh",
+                 {"icosahedron", "geodesic42", "geodesic162", "geodesic642", "geodesic2562"},
+                 "tetrahedra and shell: surface mesh (N = 12, 42, 162, 642, 2562; paper's shell: 162)");
+    binding
+        .real(body(&Compression3dOptions::E), "E", "k_c/sigma",
+              "tetrahedra: Young's modulus of each tetrahedron")
         .positive();
-    b.real(body(&Compression3dOptions::nu), "nu", "1", "tetrahedra: Poisson ratio").at_least(0.0).below(0.5);
-    b.real(body(&Compression3dOptions::kv), "kv", "k_c/sigma^4", "shell: volume stiffness k_v of eq. (9.2)")
+    binding.real(body(&Compression3dOptions::nu), "nu", "1", "tetrahedra: Poisson ratio")
+        .at_least(0.0)
+        .below(0.5);
+    binding
+        .real(body(&Compression3dOptions::kv), "kv", "k_c/sigma^4",
+              "shell: volume stiffness k_v of eq. (9.2)")
         .positive();
-    b.real(body(&Compression3dOptions::ka), "ka", "k_c/sigma^2",
-           "shell: face-area stiffness k_a of eq. (9.2)")
+    binding
+        .real(body(&Compression3dOptions::ka), "ka", "k_c/sigma^2",
+              "shell: face-area stiffness k_a of eq. (9.2)")
         .positive();
-    b.real(body(&Compression3dOptions::kb), "kb", "k_c sigma^2", "shell: bending stiffness k_b of eq. (9.2)")
+    binding
+        .real(body(&Compression3dOptions::kb), "kb", "k_c sigma^2",
+              "shell: bending stiffness k_b of eq. (9.2)")
         .positive();
-    b.integer(body(&Compression3dOptions::network_nodes), "network_nodes", "1",
-              "network: nodes (paper: 3765)")
+    binding
+        .integer(body(&Compression3dOptions::network_nodes), "network_nodes", "1",
+                 "network: nodes (paper: 3765)")
         .at_least(50);
-    b.real(body(&Compression3dOptions::cutoff), "cutoff", "node spacing",
-           "network: springs join nodes closer than this")
+    binding
+        .real(body(&Compression3dOptions::cutoff), "cutoff", "node spacing",
+              "network: springs join nodes closer than this")
         .positive();
-    b.seed(body(&Compression3dOptions::seed), "seed", "network: seed of the interior node placement");
-    b.real(schedule(&PlateSchedule::kp), "kp", "k_c", "plate-vertex spring k_p (paper: 4 k_c)").positive();
-    b.integer(schedule(&PlateSchedule::steps), "steps", "1", "compression steps, log-spaced").at_least(3);
-    b.real(schedule(&PlateSchedule::delta_min), "delta_min", "D", "smallest compression delta/D").positive();
-    b.real(schedule(&PlateSchedule::delta_max), "delta_max", "D", "largest compression delta/D")
+    binding.seed(body(&Compression3dOptions::seed), "seed", "network: seed of the interior node placement");
+    binding.real(schedule(&PlateSchedule::kp), "kp", "k_c", "plate-vertex spring k_p (paper: 4 k_c)")
+        .positive();
+    binding.integer(schedule(&PlateSchedule::steps), "steps", "1", "compression steps, log-spaced")
+        .at_least(3);
+    binding.real(schedule(&PlateSchedule::delta_min), "delta_min", "D", "smallest compression delta/D")
+        .positive();
+    binding.real(schedule(&PlateSchedule::delta_max), "delta_max", "D", "largest compression delta/D")
         .positive()
         .below(0.5);
-    b.real(&Compress3dOptions::small_fit_max, "small_fit_max", "D",
-           "small_strain_exponent: fit over delta/D from delta_min up to this")
+    binding
+        .real(&Compress3dOptions::small_fit_max, "small_fit_max", "D",
+              "small_strain_exponent: fit over delta/D from delta_min up to this")
         .positive();
-    b.real(&Compress3dOptions::fit_min, "fit_min", "D",
-           "large_strain_exponent: fit over delta/D from this ...")
+    binding
+        .real(&Compress3dOptions::fit_min, "fit_min", "D",
+              "large_strain_exponent: fit over delta/D from this ...")
         .positive();
-    b.real(&Compress3dOptions::fit_max, "fit_max", "D", "... up to this").positive();
-    b.real(schedule(&PlateSchedule::force_tolerance), "force_tolerance", "k_c sigma",
-           "FIRE stops at this rms force per degree of freedom")
+    binding.real(&Compress3dOptions::fit_max, "fit_max", "D", "... up to this").positive();
+    binding
+        .real(schedule(&PlateSchedule::force_tolerance), "force_tolerance", "k_c sigma",
+              "FIRE stops at this rms force per degree of freedom")
         .positive();
-    b.check([](const Compress3dOptions& options) {
+    binding.check([](const Compress3dOptions& options) {
         const PlateSchedule& plates = options.compression.schedule;
         require_below("delta_min", plates.delta_min, "delta_max", plates.delta_max);
         require_below("fit_min", options.fit_min, "fit_max", options.fit_max);
     });
-    return b;
+    return binding;
 }
 
 // ParaView frames, one per compression step, delta/D as the time value: the body (the surface mesh of the
@@ -260,12 +276,11 @@ Scene compress3d_scene()
                      "fe_error_max",
                      "largest |F~/F~_FE - 1| over 0.01 <= delta/D <= 0.2 against the finite-element "
                      "ball of the same law and nu (data/compare/solid_fe.toml)"})
-        .needing([](const Parameters& p) {
+        .needing(compress3d_binding().estimate([](const Compress3dOptions& options) {
             // The spring network's Newton steps use its dense Hessian; the meshes are bounded.
-            if (p.choice("model") != "spring_network") return MemoryEstimate{};
-            return dense_matrix_memory(3 * static_cast<double>(p.integer("network_nodes")), 1,
-                                       "3 x network_nodes");
-        })
+            if (options.body != Compress3dBody::spring_network) return MemoryEstimate{};
+            return dense_matrix_memory(3.0 * options.compression.network_nodes, 1, "3 x network_nodes");
+        }))
         .with_vtk();
 }
 

@@ -128,7 +128,10 @@ Scene compress_box_scene()
                "DPM Fig. 9.4: soft disks or deformable particles compressed uniaxially by 20 % in a box "
                "with repulsive walls: snapshots, overlaps, facets",
                compress_box_binding(), run_compress_box)
-        .needing(bidisperse_memory)
+        .needing(compress_box_binding().estimate([](const BoxCompressOptions& options) {
+            return bidisperse_memory(
+                {options.particles, options.nodes_small, options.nodes_large, !options.deformable});
+        }))
         .with_vtk();
 }
 

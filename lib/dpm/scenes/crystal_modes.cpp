@@ -137,12 +137,11 @@ Scene crystal_modes_scene()
                "DPM eq. (9.28), Fig. 9.5(a): modes of a compressed triangular soft-disk crystal against "
                "its exact phonon spectrum; the displacement field of one mode",
                crystal_modes_binding(), run_crystal_modes)
-        .needing([](const Parameters& p) {
+        .needing(crystal_modes_binding().estimate([](const CrystalModesOptions& options) {
             // rows x rows disks: the dynamical matrix of 2 rows^2 rows and its eigenvectors.
-            return dense_matrix_memory(2 * static_cast<double>(p.integer("rows")) *
-                                           static_cast<double>(p.integer("rows")),
-                                       2, "2 x rows^2");
-        })
+            const double rows = options.rows;
+            return dense_matrix_memory(2 * rows * rows, 2, "2 x rows^2");
+        }))
         .with_vtk();
 }
 

@@ -77,31 +77,26 @@ void run_jam(const JamOptions& options, RunContext& context)
 
 // The bidisperse packings of dpm.jam's parameters, also those of dpm.compress_box, dpm.shear_modulus and
 // dpm.slump.
-bool disks(const Parameters& p)
+BidispersePacking bidisperse_packing(const JamOptions& options)
 {
-    const auto& specs = p.specs();
-    if (std::none_of(specs.begin(), specs.end(),
-                     [](const ParameterSpec& spec) { return spec.name == "model"; }))
-        return false;
-    const std::string& model = p.choice("model");
-    return model == "smooth_disk" || model == "disks";
+    return {options.particles, options.nodes_small, options.nodes_large, options.model == "smooth_disk"};
 }
 
-double bidisperse_vertices(const Parameters& p)
+double bidisperse_vertices(const BidispersePacking& packing)
 {
-    const auto particles = static_cast<double>(p.integer("particles"));
-    if (disks(p)) return particles;
-    return particles * static_cast<double>(p.integer("nodes_small") + p.integer("nodes_large")) / 2;
+    const auto particles = static_cast<double>(packing.particles);
+    if (packing.disks) return particles;
+    return particles * (static_cast<double>(packing.nodes_small) + packing.nodes_large) / 2;
 }
 
-const char* bidisperse_basis(const Parameters& p)
+const char* bidisperse_basis(const BidispersePacking& packing)
 {
-    return disks(p) ? "disks (particles)" : "vertices (particles x (nodes_small + nodes_large) / 2)";
+    return packing.disks ? "disks (particles)" : "vertices (particles x (nodes_small + nodes_large) / 2)";
 }
 
-MemoryEstimate bidisperse_memory(const Parameters& p)
+MemoryEstimate bidisperse_memory(const BidispersePacking& packing)
 {
-    return dpm_vertex_memory(bidisperse_vertices(p), bidisperse_basis(p));
+    return dpm_vertex_memory(bidisperse_vertices(packing), bidisperse_basis(packing));
 }
 
 Scene jam_scene()
@@ -111,7 +106,8 @@ Scene jam_scene()
                "DPM sec. 9.4: jamming onset of bidisperse disks or deformable particles by compression "
                "+ FIRE with bisection on the pressure; P against phi - phi_c (Fig. 9.13)",
                jam_binding(), run_jam)
-        .needing(bidisperse_memory)
+        .needing(jam_binding().estimate(
+            [](const JamOptions& options) { return bidisperse_memory(bidisperse_packing(options)); }))
         .with_vtk();
 }
 

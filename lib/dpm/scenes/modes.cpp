@@ -101,12 +101,12 @@ OptionBinding<ModesOptions> modes_binding()
 }
 
 // A spectrum (eq. 9.28) takes the dense dynamical matrix and its eigenvectors: two n x n matrices.
-MemoryEstimate modes_memory(const Parameters& p)
+MemoryEstimate modes_memory(const ModesOptions& options)
 {
     // A packing has particles of nodes and nodes + 4 vertices, a single particle nodes.
-    const auto particles = static_cast<double>(p.integer("particles"));
-    const auto nodes = static_cast<double>(p.integer("nodes"));
-    if (p.choice("model") == "smooth_disk") return dense_matrix_memory(2 * particles, 2, "2 x particles");
+    const double particles = options.particles;
+    const double nodes = options.nodes;
+    if (!options.model) return dense_matrix_memory(2 * particles, 2, "2 x particles"); // smooth disks
     const double vertices = particles > 1 ? particles * (nodes + 2) : nodes;
     return dense_matrix_memory(2 * vertices, 2, particles > 1 ? "2 x particles x (nodes + 2)" : "2 x nodes");
 }
@@ -476,7 +476,7 @@ Scene modes_scene()
                "DPM eq. (9.28): eigenvalues of the dynamical matrix of a floppy / shell / surface-tension "
                "particle, zero modes, Delta U along each mode (Figs. 9.14a, c)",
                modes_binding(), run_modes)
-        .needing(modes_memory)
+        .needing(modes_binding().estimate(modes_memory))
         .with_vtk();
 }
 

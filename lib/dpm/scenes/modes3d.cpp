@@ -493,9 +493,9 @@ Scene modes3d_scene()
                        "shell / surface-tension particle and its zero modes (Fig. 9.15a), or of a jammed "
                        "bidisperse packing of them (particles > 1, Fig. 9.15b)",
                        modes3d_binding(), run_modes3d)
-        .needing([](const Parameters& p) {
-            return packing3d_memory(static_cast<double>(p.integer("particles")), p.choice("mesh"), 2);
-        })
+        .needing(modes3d_binding().estimate([](const Modes3dOptions& options) {
+            return packing3d_memory(options.jam.particles, options.jam.mesh, 2);
+        }))
         .with_vtk();
 }
 

@@ -116,10 +116,10 @@ Scene packing_fraction_scene()
                        "DPM eqs. (9.18)-(9.22): packing fraction of a jammed packing of rough particles, "
                        "analytic against Monte-Carlo, term by term (Table 9.2)",
                        packing_fraction_binding(), run_packing_fraction)
-        .needing([](const Parameters& p) {
-            return dpm_vertex_memory(static_cast<double>(p.integer("particles") * p.integer("nodes")),
+        .needing(packing_fraction_binding().estimate([](const PackingFractionOptions& options) {
+            return dpm_vertex_memory(double(options.packing.particles) * double(options.packing.nodes),
                                      "vertices (particles x nodes)");
-        })
+        }))
         .with_vtk();
 }
 

@@ -172,9 +172,9 @@ Scene rearrangement_scene()
                        "DPM Fig. 9.13(e, f): the first irreversible change of the contact network of a "
                        "smooth-disk packing compressed from onset in steps Delta phi; both networks",
                        rearrangement_binding(), run_rearrangement)
-        .needing([](const Parameters& p) {
-            return dpm_vertex_memory(static_cast<double>(p.integer("particles")), "disks (particles)");
-        })
+        .needing(rearrangement_binding().estimate([](const RearrangementOptions& options) {
+            return dpm_vertex_memory(options.jam.particles, "disks (particles)");
+        }))
         .with_vtk();
 }
 

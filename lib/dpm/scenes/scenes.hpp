@@ -89,12 +89,18 @@ void bind_jam_protocol(OptionBinding<Options>& binding, JamField jam)
         "finisher on the sparse Hessian where it crawls (newton_relax.hpp; rough_disk: fire only)");
 }
 
-// A scene with a `model` choice that is set to disks (smooth_disk or disks; a scene without one: false).
-bool disks(const Parameters& p);
-// The vertices of a bidisperse packing of the parameters particles, nodes_small and nodes_large, half small
-// and half large particles (a disk is one vertex), and what they are counted in.
-double bidisperse_vertices(const Parameters& p);
-const char* bidisperse_basis(const Parameters& p);
-MemoryEstimate bidisperse_memory(const Parameters& p);
+// A bidisperse packing of the parameters particles, nodes_small and nodes_large: half small and half large
+// particles, each of its nodes, or one vertex for a disk.
+struct BidispersePacking
+{
+    int particles = 0, nodes_small = 0, nodes_large = 0;
+    bool disks = false;
+};
+// dpm.jam's packing (smooth disks are disks; rough disks are polygons of vertices).
+BidispersePacking bidisperse_packing(const JamOptions& options);
+// Its vertices, what they are counted in (naming the parameters), and the memory of its system.
+double bidisperse_vertices(const BidispersePacking& packing);
+const char* bidisperse_basis(const BidispersePacking& packing);
+MemoryEstimate bidisperse_memory(const BidispersePacking& packing);
 
 } // namespace softgrain::dpm

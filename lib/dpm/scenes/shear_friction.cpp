@@ -273,9 +273,9 @@ Scene shear_friction_scene()
                        "DPM sec. 9.3.3: simple shear of two rough or smooth particles, mu_eff against x/D "
                        "(Figs. 9.8, 9.9), maximum against eq. (9.13)",
                        shear_friction_binding(), run_shear_friction)
-        .needing([](const Parameters& p) {
-            return dpm_vertex_memory(2 * static_cast<double>(p.integer("nodes")), "vertices (2 x nodes)");
-        })
+        .needing(shear_friction_binding().estimate([](const ShearFrictionOptions& options) {
+            return dpm_vertex_memory(2.0 * options.test.nodes, "vertices (2 x nodes)");
+        }))
         .with_vtk();
 }
 

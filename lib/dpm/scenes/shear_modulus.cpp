@@ -118,11 +118,12 @@ Scene shear_modulus_scene()
                        "DPM sec. 9.4.3: shear modulus G of jammed packings from Lees-Edwards strain steps "
                        "against pressure, fitted exponent of G ~ P^eta (Fig. 9.16a)",
                        shear_modulus_binding(), run_shear_modulus)
-        .needing([](const Parameters& p) {
+        .needing(shear_modulus_binding().estimate([](const ShearModulusOptions& options) {
             // The Newton polish at each pressure uses the dense Hessian of the packing.
-            return dense_matrix_memory(2 * bidisperse_vertices(p), 1,
-                                       std::string("2 x ") + bidisperse_basis(p));
-        })
+            const BidispersePacking packing = bidisperse_packing(options.jam);
+            return dense_matrix_memory(2 * bidisperse_vertices(packing), 1,
+                                       std::string("2 x ") + bidisperse_basis(packing));
+        }))
         .with_vtk();
 }
 

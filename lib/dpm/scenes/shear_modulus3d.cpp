@@ -219,9 +219,9 @@ Scene shear_modulus3d_scene()
                        "surface-tension particles from Lees-Edwards strain steps against pressure, fitted "
                        "exponents of G ~ P^eta (Fig. 9.16b)",
                        shear_modulus3d_binding(), run_shear_modulus3d)
-        .needing([](const Parameters& p) {
-            return packing3d_memory(static_cast<double>(p.integer("particles")), p.choice("mesh"), 1);
-        })
+        .needing(shear_modulus3d_binding().estimate([](const ShearModulus3dOptions& options) {
+            return packing3d_memory(options.jam.particles, options.jam.mesh, 1);
+        }))
         .with_vtk();
 }
 

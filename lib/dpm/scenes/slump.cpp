@@ -162,7 +162,9 @@ Scene slump_scene()
                "DPM Fig. 9.3: slump test of rough or smooth deformable particles under gravity, right "
                "wall removed; run-out, angle of repose, layers at the front",
                slump_binding(), run_slump_scene)
-        .needing(bidisperse_memory)
+        .needing(slump_binding().estimate([](const SlumpOptions& options) {
+            return bidisperse_memory({options.particles, options.nodes_small, options.nodes_large, false});
+        }))
         .with_vtk();
 }
 

@@ -122,9 +122,9 @@ Scene beam_scene()
                        "SPD section 3: cantilever or simply supported beam under a point force, against beam "
                        "theory",
                        beam_binding(), run_beam)
-        .needing([](const Parameters& parameters) {
-            return shell_model_memory(double(parameters.integer("nodes")), "vertices (nodes)");
-        })
+        .needing(beam_binding().estimate([](const BeamOptions& options) {
+            return shell_model_memory(options.beam.nodes, "vertices (nodes)");
+        }))
         .with_vtk();
 }
 

@@ -142,7 +142,8 @@ Scene bench_scene()
                "spd.bench",
                "SPD speed: elastic rings colliding in a box; vertex-steps per second of the time-step loop",
                bench_binding(), run_bench)
-        .needing(rings_memory)
+        .needing(
+            bench_binding().estimate([](const BenchOptions& options) { return rings_memory(options.setup); }))
         .without_vtk("a timed scene: writing frames would change the time it measures; "
                      "spd.compaction draws colliding rings");
 }

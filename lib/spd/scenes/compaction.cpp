@@ -204,7 +204,10 @@ Scene compaction_scene()
         "rings deposited under gravity; sigma/sigma*, void ratio, Delta V_s/Delta V, W_i/<W> (Figs. 26-29)",
         compaction_binding(), run_compaction);
     compaction.checkpoints = true;
-    return std::move(compaction).needing(rings_memory).with_vtk();
+    return std::move(compaction)
+        .needing(compaction_binding().estimate(
+            [](const CompactionSetup& setup) { return rings_memory(setup.assembly); }))
+        .with_vtk();
 }
 
 } // namespace softgrain::spd

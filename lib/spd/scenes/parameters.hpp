@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/option_binding.hpp"
+#include "spd/assembly.hpp"
 #include "spd/calibration.hpp"
 #include "spd/ring.hpp"
 #include "spd/shell_model.hpp"
@@ -52,9 +53,9 @@ void bind_ring(OptionBinding<Options>& binding, RingField ring)
 }
 
 // The memory of `particles` rings of `nodes` vertices each.
-inline MemoryEstimate rings_memory(const Parameters& parameters)
+inline MemoryEstimate rings_memory(const AssemblySetup& assembly)
 {
-    return shell_model_memory(double(parameters.integer("particles")) * double(parameters.integer("nodes")),
+    return shell_model_memory(double(assembly.particles) * double(assembly.ring.nodes),
                               "vertices (particles x nodes)");
 }
 

@@ -243,9 +243,9 @@ Scene ring_compression_scene()
                "SPD section 4: quasi-static diametral compression of a ring between rigid walls, with "
                "the elastica reference",
                ring_compression_binding(), run_ring_compression)
-        .needing([](const Parameters& parameters) {
-            return shell_model_memory(double(parameters.integer("nodes")), "vertices (nodes)");
-        })
+        .needing(ring_compression_binding().estimate([](const RingCompressionOptions& options) {
+            return shell_model_memory(options.ring.nodes, "vertices (nodes)");
+        }))
         .with_vtk();
 }
 

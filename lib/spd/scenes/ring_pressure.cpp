@@ -90,9 +90,9 @@ Scene ring_pressure_scene()
                "spd.ring_pressure",
                "SPD eqs. (19)-(25): ring under small internal pressure; K_shell and K_e against theory",
                ring_pressure_binding(), run_ring_pressure)
-        .needing([](const Parameters& parameters) {
-            return shell_model_memory(double(parameters.integer("nodes")), "vertices (nodes)");
-        })
+        .needing(ring_pressure_binding().estimate([](const RingPressureOptions& options) {
+            return shell_model_memory(options.ring.nodes, "vertices (nodes)");
+        }))
         .with_vtk();
 }
 

@@ -365,13 +365,13 @@ Scene tissue_scene()
                     tissue_binding(), run_tissue);
     tissue.checkpoints = true;
     return std::move(tissue)
-        .needing([](const Parameters& parameters) {
+        .needing(tissue_binding().estimate([](const TissueOptions& options) {
             // A cell of a planar tiling has 6 edges on average (Euler's formula).
-            return shell_model_memory(double(parameters.integer("rows")) *
-                                          double(parameters.integer("columns")) * 6.0 *
-                                          double(parameters.integer("edge_segments")),
+            const TissueSetup& cells = options.tissue;
+            return shell_model_memory(double(cells.rows) * double(cells.columns) * 6.0 *
+                                          double(cells.edge_segments),
                                       "vertices (rows x columns x 6 x edge_segments)");
-        })
+        }))
         .with_vtk();
 }
 

@@ -154,11 +154,11 @@ Scene lblock_scene()
                "vsm.lblock",
                "VSM L-shaped block (Frenning Figs. 6-8): free block, traction pulse, momentum conservation",
                lblock_binding(), run_lblock)
-        .needing([](const Parameters& parameters) {
+        .needing(lblock_binding().estimate([](const LBlockOptions& options) {
             // The L of arms 6 x 3 x 3 m and 3 x 7 x 3 m: 117 m^3.
-            return vsm_particle_memory(117.0 / cube(parameters.real("spacing")),
+            return vsm_particle_memory(117.0 / cube(options.setup.spacing),
                                        "particles (117 m^3 / spacing^3)");
-        })
+        }))
         .with_vtk();
 }
 

@@ -106,10 +106,9 @@ Scene patch_scene()
                        "VSM patch tests A, B, C (Frenning Table 1): irregular particles in the unit cube, "
                        "linear field eq. (52)",
                        patch_binding(), run_patch)
-        .needing([](const Parameters& parameters) {
-            return vsm_particle_memory(cube(double(parameters.integer("per_side"))),
-                                       "particles (per_side^3)");
-        })
+        .needing(patch_binding().estimate([](const PatchOptions& options) {
+            return vsm_particle_memory(cube(double(options.setup.per_side)), "particles (per_side^3)");
+        }))
         .with_vtk();
 }
 

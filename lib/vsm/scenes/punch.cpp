@@ -162,11 +162,11 @@ Scene punch_scene()
                "VSM punch test (Frenning Figs. 9-10): rigid punch on the middle third, stabilisation xi, "
                "pressure field",
                punch_binding(), run_punch_scene)
-        .needing([](const Parameters& parameters) {
-            const double per_side = double(parameters.integer("per_side"));
-            return vsm_particle_memory(per_side * (2 * per_side - 1) * double(parameters.integer("layers")),
+        .needing(punch_binding().estimate([](const PunchOptions& options) {
+            const double per_side = double(options.per_side);
+            return vsm_particle_memory(per_side * (2 * per_side - 1) * double(options.layers),
                                        "particles (per_side x (2 per_side - 1) x layers)");
-        })
+        }))
         .with_vtk();
 }
 

@@ -163,10 +163,9 @@ Scene swinging_cube_scene()
                "VSM swinging cube (Frenning Fig. 5): displacement error against the linear solution eq. "
                "(53) at t = 5 ms",
                swinging_cube_binding(), run_swinging_cube_scene)
-        .needing([](const Parameters& parameters) {
-            return vsm_particle_memory(cube(double(parameters.integer("per_side"))),
-                                       "particles (per_side^3)");
-        })
+        .needing(swinging_cube_binding().estimate([](const SwingingCubeOptions& options) {
+            return vsm_particle_memory(cube(double(options.setup.per_side)), "particles (per_side^3)");
+        }))
         .with_vtk();
 }
 
