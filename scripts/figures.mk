@@ -2,7 +2,7 @@
 SOFTGRAIN ?= build/softgrain
 SCALE ?= default
 OUT ?= figures
-# MPIRUN="mpirun -n 64" (or "srun"): the launcher of the ensemble figures' runs (README, "Ensembles over MPI").
+# MPIRUN="mpirun -n 64" (or "srun"): the launcher of the ensemble figures' runs (reproductions/README.md, "Ensemble figures under MPI").
 MPIRUN ?=
 FIGURES := $(shell python3 scripts/reproduce list)
 REPORTS := $(FIGURES:%=$(OUT)/%.claims.json)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Runs the ParaView scripts a user is told to run (scripts/paraview/spd.py, dpm.py, vsm.py, sd.py, README
-"ParaView time series") the way the README says, with pvbatch and --screenshot, on small runs of
+"""Runs the ParaView scripts a user is told to run (scripts/paraview/spd.py, dpm.py, vsm.py, sd.py,
+scripts/paraview/README.md) the way that page says, with pvbatch and --screenshot, on small runs of
 `softgrain run --vtk`, and checks what they drew:
 
   - each script exits 0 and prints the array, frame index, time value and colour range it used;
