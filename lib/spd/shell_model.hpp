@@ -9,10 +9,11 @@
 // evaluation from the change of geometry since the previous one. Cohesive links between shells (section 6)
 // are optional per-link records (lib/spd/cohesive_link.hpp) with their broken state.
 //
-// ShellModel owns the vertex state, the shells' laws and cores (eqs. (1)-(4), the RATTLE constraint of an
-// incompressible core) and the time step; two parts do one job each: the contacts (ShellContacts,
-// spd/shell_contacts.hpp: candidates, eqs. (6)-(7), the gather) and the cohesive links (ShellLinks,
-// spd/shell_links.hpp).
+// ShellModel owns the vertex state, the shells' laws (eqs. (1)-(3)) and the time step (velocity Verlet, its
+// RATTLE form with an incompressible core); three parts do one job each: the cores (ShellCores,
+// spd/shell_cores.hpp: eq. (4), the RATTLE constraint of an incompressible core), the contacts
+// (ShellContacts, spd/shell_contacts.hpp: candidates, eqs. (6)-(7), the gather) and the cohesive links
+// (ShellLinks, spd/shell_links.hpp).
 #pragma once
 
 #include "core/resources.hpp"
@@ -21,6 +22,7 @@
 #include "spd/cohesive_link.hpp"
 #include "spd/shell.hpp"
 #include "spd/shell_contacts.hpp"
+#include "spd/shell_cores.hpp"
 #include "spd/shell_links.hpp"
 
 #include <Eigen/Core>
@@ -106,7 +108,7 @@ class ShellModel
     // Measures.
     double area(int shell) const; // polygon area [m^2], CCW positive
     // Area of a closed shell when it was added (its reference geometry) [m^2].
-    double reference_area(int shell) const { return core_V0_[shell] / shells_[shell].depth; }
+    double reference_area(int shell) const { return cores_.reference_volume(shell) / shells_[shell].depth; }
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
     // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
@@ -114,7 +116,7 @@ class ShellModel
     double elastic_energy(int shell) const;
     // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
     // [Pa].
-    double core_pressure(int shell) const { return core_p_[shell]; }
+    double core_pressure(int shell) const { return cores_.pressure(shell); }
     double kinetic_energy() const;
     // Largest unbalanced force on a free degree of freedom, damping excluded [N].
     double max_free_force() const;
@@ -162,12 +164,11 @@ class ShellModel
     double neighbour_skin() const { return contacts_.skin(); }
 
   private:
-    // The state its parts read: the contacts and the links.
+    // The state its parts read: the cores, the contacts and the links.
     ShellView view() const { return {x_, v_, shells_, shell_of_}; }
     void internal_forces(const Shell& s);
     double shell_stretch_energy(const Shell& s) const;
     double shell_bending_energy(const Shell& s) const;
-    void core_forces(int index);
     void step_constrained(double dt, double damping);
     // Parallel regions open above this many vertices: below, a region costs more than it saves.
     static constexpr int parallel_vertices = 2000;
@@ -195,10 +196,6 @@ class ShellModel
                std::isfinite(v_[2 * i + 1]);
     }
     void throw_step_too_long(double dt) const;
-    // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
-    // are xs (2 count entries): outward for a CCW polygon [m].
-    static Vec2 vertex_area_gradient(const double* xs, int count, int k);
-    Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
     int shell_of(int vertex) const { return shell_of_[vertex]; }
     // The free degree of freedom with the largest |f| (damping excluded) and that |f|.
     std::pair<Eigen::Index, double> largest_free_force() const;
@@ -217,8 +214,8 @@ class ShellModel
     // the rotation of this call.
     std::vector<Vec2> edge_;
     std::vector<double> edge_squared_, edge_rotation_;
-    std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
-    std::vector<int> shell_of_;                          // per vertex
+    std::vector<int> shell_of_; // per vertex
+    ShellCores cores_;
     ShellContacts contacts_;
     ShellLinks links_;
     std::int64_t steps_ = 0;
