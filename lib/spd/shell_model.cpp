@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "core/integrators.hpp"
 #include "spd/force_laws.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -287,8 +288,8 @@ void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
             ++bad;
         std::ostringstream cause;
         cause << "vertex " << bad << " of particle " << shell_of(bad)
-              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
-              << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
+              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step(*this)
+              << ", dt_c = sqrt(m/k_max) = " << critical_time_step(*this) << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
     }
     if (flags.too_long) throw_step_too_long(dt);
@@ -315,8 +316,8 @@ void ShellModel::throw_step_too_long(double dt) const
         cause << "vertex " << i << " of particle " << shell_of(i) << " moved " << moved
               << " m in one step, more than its contact radius r = " << shells_[shell_of(i)].radius
               << " m (it can pass through an element): an energy blow-up, e.g. dt/dt_c = "
-              << dt / critical_time_step() << " above the stable "
-              << stable_time_step() / critical_time_step() << ", or an exploding load";
+              << dt / critical_time_step(*this) << " above the stable "
+              << stable_time_step(*this) / critical_time_step(*this) << ", or an exploding load";
         throw NumericalError("vertex step length", steps_, cause.str());
     }
 }
@@ -347,61 +348,6 @@ double ShellModel::min_vertex_mass() const
     for (Eigen::Index d = 0; d < inverse_mass_.size(); ++d)
         if (inverse_mass_[d] > 0) m = std::min(m, 1.0 / inverse_mass_[d]);
     return m;
-}
-
-double ShellModel::critical_time_step() const
-{
-    double k_max = contacts_.law().k_n;
-    if (!links_.empty()) k_max = std::max({k_max, links_.law().k_n, links_.law().k_t});
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& s = shells_[p];
-        if (s.rigid) continue;
-        double l_min = INFINITY;
-        for (int k = 0; k < s.elements(); ++k)
-            l_min = std::min(l_min, length_prev_[s.first + k]);
-        k_max = std::max({k_max, s.laws.k_s, 4.0 * s.laws.k_b / (l_min * l_min)});
-        k_max = std::max(k_max, cores_.stiffness(view(), static_cast<int>(p)));
-    }
-    return std::sqrt(min_vertex_mass() / k_max);
-}
-
-namespace {
-// Largest h of the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v': the root of
-// h^2 omega^2 + 2 h gamma = 4.
-double damped_oscillator_limit(double omega2, double gamma)
-{
-    return (std::sqrt(gamma * gamma + 4 * omega2) - gamma) / omega2;
-}
-} // namespace
-
-double ShellModel::stable_time_step() const
-{
-    double limit = critical_time_step();
-    if (contacts_.enabled()) {
-        const ContactLaw& contact = contacts_.law();
-        const double m = min_vertex_mass(), omega2 = contact.k_n / m, gamma = contact.normal_damping / m;
-        limit = std::min(limit, damped_oscillator_limit(omega2, gamma)); // a vertex on a wall
-        const auto free_shells =
-            std::count_if(shells_.begin(), shells_.end(), [](const Shell& s) { return !s.rigid; });
-        if (free_shells > 1) limit = std::min(limit, damped_oscillator_limit(4 * omega2, 4 * gamma));
-    }
-    return limit;
-}
-
-void ShellModel::check_time_step(double dt) const
-{
-    const double dt_c = critical_time_step(), limit = stable_time_step();
-    if (!(dt > 0)) // a dt_factor that underflows: every step would leave the state as it is
-        throw InputError("the time step dt = " + number_text(dt) + " s (dt_c = " + number_text(dt_c) +
-                         " s); allowed: dt_factor giving dt > 0");
-    if (dt <= limit) return;
-    std::ostringstream cause;
-    cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
-          << " s (" << limit / dt_c << " dt_c, dt_c = sqrt(m/k_max) = " << dt_c
-          << " s): the smallest of dt_c and the damped-contact limits (sqrt(gamma^2 + 4 omega^2) - "
-             "gamma)/omega^2 of velocity Verlet for a vertex on a wall and, between free shells, for a "
-             "vertex-vertex pair (decisions spd-stability-limit, spd-vertex-pair-stability)";
-    throw NumericalError("time step", steps_, cause.str());
 }
 
 double ShellModel::shell_stretch_energy(const Shell& s) const
@@ -533,13 +479,13 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
           << " N > tolerance " << force_tolerance << " N, on " << model.describe_vertex(i) << ")";
     if (reverses)
         cause << ": its force reverses at every step, the period-2 oscillation of the scheme: dt = "
-              << dt / model.critical_time_step()
+              << dt / critical_time_step(model)
               << " dt_c is above the stability limit of the contacts there (the limit checked is "
-              << model.stable_time_step() / model.critical_time_step() << " dt_c)";
+              << stable_time_step(model) / critical_time_step(model) << " dt_c)";
     else
         cause << ": damping too weak or too strong for the slowest mode, or dt = "
-              << dt / model.critical_time_step() << " dt_c too close to the stability limit "
-              << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
+              << dt / critical_time_step(model) << " dt_c too close to the stability limit "
+              << stable_time_step(model) / critical_time_step(model) << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
 }
 
