@@ -6,6 +6,7 @@
 #include "dpm/vtk_frames.hpp"
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
+#include "spd/time_step_limits.hpp"
 #include "spd/vtk_frames.hpp"
 
 #include <algorithm>
@@ -63,7 +64,7 @@ RingComparison compress_spd(const RingComparisonSetup& comparison,
     out.steps = result.steps;
     out.dt = result.dt;
     out.dt_critical = result.dt_critical;
-    out.dt_stable = spd::ring_between_walls(setup).model.stable_time_step();
+    out.dt_stable = spd::stable_time_step(spd::ring_between_walls(setup).model);
     for (const spd::CompressionState& state : result.states)
         out.states.push_back(spd_observation(comparison, B, state));
     return out;

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "spd/shell_model.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -79,9 +80,9 @@ BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_
     const double beta_L = cantilever ? 1.8751 : std::numbers::pi;
     const double omega1 = beta_L * beta_L * std::sqrt(EI * l / (m * std::pow(setup.length, 4)));
     BeamResult r;
-    r.critical_time_step = model.critical_time_step();
+    r.critical_time_step = critical_time_step(model);
     r.dt = dt_factor * r.critical_time_step;
-    model.check_time_step(r.dt);
+    check_time_step(model, r.dt);
 
     model.set_applied_force(load, Vec2(0.0, -setup.force));
     const long max_steps = static_cast<long>(200.0 * 2 * std::numbers::pi / (omega1 * r.dt)) + 10000;

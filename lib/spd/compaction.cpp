@@ -6,6 +6,7 @@
 #include "core/geometry.hpp"
 #include "core/neighbour_list.hpp"
 #include "core/rng.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -169,8 +170,8 @@ Deposit place_rings(const CompactionSetup& setup)
         for (int i = s.first; i < s.first + s.count; ++i)
             model.set_applied_force(i, Vec2(0, -d.weight / nodes));
     }
-    d.dt = setup.assembly.ring.dt_factor * model.critical_time_step();
-    model.check_time_step(d.dt);
+    d.dt = setup.assembly.ring.dt_factor * critical_time_step(model);
+    check_time_step(model, d.dt);
     return d;
 }
 
@@ -230,8 +231,8 @@ void start_loading(const CompactionSetup& setup, CompactionResult& result)
     result.solid_area0 = 0;
     for (int p : a.particles)
         result.solid_area0 += solid_area(model, p);
-    result.dt = ring.dt_factor * model.critical_time_step();
-    model.check_time_step(result.dt);
+    result.dt = ring.dt_factor * critical_time_step(model);
+    check_time_step(model, result.dt);
     const double omega2 = ring_damping(ring) / (2 * ring.vertex_mass);
     result.wall_speed = setup.wall_speed * ring.radius * omega2;
 }

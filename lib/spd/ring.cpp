@@ -1,6 +1,7 @@
 #include "spd/ring.hpp"
 
 #include "core/errors.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,8 +60,8 @@ RingPressureResult ring_under_pressure(const RingSetup& setup, double pressure,
     ShellModel model;
     const int ring = add_ring(model, setup, pressure);
     const double A0 = model.area(ring);
-    const double dt = setup.dt_factor * model.critical_time_step();
-    model.check_time_step(dt);
+    const double dt = setup.dt_factor * critical_time_step(model);
+    check_time_step(model, dt);
     // The uniform load excites only the breathing mode, of radial stiffness per vertex
     // 4 k_s sin^2(pi/N) (eq. (21)) + 2 K_Omega s l0 / R (eq. (4)); damping critical for it.
     const double k_radial = 4 * sc.laws.k_s * std::pow(std::sin(pi / setup.nodes), 2) +
@@ -114,9 +115,9 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     const double A0 = model.area(ring);
 
     CompressionResult result;
-    result.dt_critical = model.critical_time_step();
+    result.dt_critical = critical_time_step(model);
     result.dt = setup.dt_factor * result.dt_critical;
-    model.check_time_step(result.dt); // 0.83 dt_c with the critically damped wall contact
+    check_time_step(model, result.dt); // 0.83 dt_c with the critically damped wall contact
     const double omega2 = ovalisation_frequency(setup, sc);
     const double damping = ring_damping(setup);
     const double force_scale = std::min(sc.flexural_rigidity / (R * R), sc.characteristic.F_2star);

@@ -34,8 +34,8 @@ struct ContactLaw
     double normal_damping = 0;
 };
 
-// What the parts of ShellModel (its contacts and links) read of it: positions and velocities (x and y of
-// each vertex, interleaved), the shells and the shell of each vertex.
+// What the parts of ShellModel (its cores, contacts and links) read of it: positions and velocities (x and y
+// of each vertex, interleaved), the shells and the shell of each vertex.
 struct ShellView
 {
     const Eigen::VectorXd& x;

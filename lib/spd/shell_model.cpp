@@ -2,9 +2,9 @@
 
 #include "core/checkpoint.hpp"
 #include "core/errors.hpp"
-#include "core/geometry.hpp"
 #include "core/integrators.hpp"
 #include "spd/force_laws.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,11 +47,9 @@ int ShellModel::add_shell(const Points<2>& vertices, Shell shell, double vertex_
         length_prev_[n0 + k] = edge_[n0 + k].norm();
     }
     shells_.push_back(shell);
-    const double V = shell.closed ? shell.depth * area(static_cast<int>(shells_.size()) - 1) : 0.0;
-    core_V_prev_.push_back(V);
-    core_V0_.push_back(V);
-    core_p_.push_back(0.0);
-    return static_cast<int>(shells_.size()) - 1;
+    const int index = static_cast<int>(shells_.size()) - 1;
+    cores_.add(view(), index);
+    return index;
 }
 
 std::vector<Vec2> ShellModel::outline(int shell) const
@@ -84,8 +82,7 @@ void ShellModel::translate(int shell, const Vec2& displacement)
 
 double ShellModel::area(int shell) const
 {
-    const Shell& s = shells_[shell];
-    return polygon_signed_area(Eigen::Map<const Points<2>>(x_.data() + 2 * s.first, 2, s.count));
+    return shell_area(view(), shells_[shell]);
 }
 
 // SPD eqs. (1) and (3): incremental stretch force and hinge torque, applied as axial forces and as two
@@ -130,45 +127,6 @@ void ShellModel::internal_forces(const Shell& s)
         add(i, couples.centre);
         add(b, couples.next);
     }
-}
-
-// SPD eq. (4) and section 2.4: dp = -K_Omega dV/V0 (undrained), plus a constant applied (drained) pressure;
-// each element receives s l p along its outward normal at its midpoint, half to each end (this is
-// p dV/dx_k = p s dA/dx_k exactly). The pressure of an incompressible core is the constraint multiplier,
-// applied by step_constrained; here it only receives the applied pressure.
-void ShellModel::core_forces(int index)
-{
-    const Shell& s = shells_[index];
-    double p = s.pressure_applied;
-    if (!s.incompressible()) {
-        const double V = s.depth * area(index);
-        core_p_[index] += -s.K_Omega * (V - core_V_prev_[index]) / core_V0_[index];
-        core_V_prev_[index] = V;
-        p += core_p_[index];
-    }
-    if (p == 0.0) return;
-    // Added vertex by vertex, without a temporary: this runs inside the parallel force region, which no
-    // exception (not even bad_alloc) may leave.
-    const double scale = s.depth * p;
-    const double* xs = x_.data() + 2 * s.first;
-    for (int k = 0; k < s.count; ++k)
-        add_force(s.first + k, scale * vertex_area_gradient(xs, s.count, k));
-}
-
-// dA/dx_k of a polygon's signed area (xs: its vertices, x and y interleaved): half its chord from the
-// previous to the next vertex, turned by -90 degrees.
-Vec2 ShellModel::vertex_area_gradient(const double* xs, int count, int k)
-{
-    const int a = (k + count - 1) % count, b = (k + 1) % count;
-    return {0.5 * (xs[2 * b + 1] - xs[2 * a + 1]), -0.5 * (xs[2 * b] - xs[2 * a])};
-}
-
-Eigen::VectorXd ShellModel::area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const
-{
-    Eigen::VectorXd g(2 * s.count);
-    for (int k = 0; k < s.count; ++k)
-        g.segment<2>(2 * k) = vertex_area_gradient(xs.data(), s.count, k);
-    return g;
 }
 
 namespace {
@@ -226,7 +184,7 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
         const Shell& s = shells_[p];
         if (s.rigid) continue;
         internal_forces(s);
-        if (s.closed && (s.K_Omega > 0 || s.pressure_applied != 0)) core_forces(p);
+        cores_.add_forces(view(), p, f_);
     }
     bool overlap = false;
 #pragma omp for schedule(static)
@@ -330,8 +288,8 @@ void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
             ++bad;
         std::ostringstream cause;
         cause << "vertex " << bad << " of particle " << shell_of(bad)
-              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step()
-              << ", dt_c = sqrt(m/k_max) = " << critical_time_step() << " s) or an unstable load";
+              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step(*this)
+              << ", dt_c = sqrt(m/k_max) = " << critical_time_step(*this) << " s) or an unstable load";
         throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
     }
     if (flags.too_long) throw_step_too_long(dt);
@@ -358,63 +316,30 @@ void ShellModel::throw_step_too_long(double dt) const
         cause << "vertex " << i << " of particle " << shell_of(i) << " moved " << moved
               << " m in one step, more than its contact radius r = " << shells_[shell_of(i)].radius
               << " m (it can pass through an element): an energy blow-up, e.g. dt/dt_c = "
-              << dt / critical_time_step() << " above the stable "
-              << stable_time_step() / critical_time_step() << ", or an exploding load";
+              << dt / critical_time_step(*this) << " above the stable "
+              << stable_time_step(*this) / critical_time_step(*this) << ", or an exploding load";
         throw NumericalError("vertex step length", steps_, cause.str());
     }
 }
 
 // RATTLE (H. C. Andersen, J. Comput. Phys. 52 (1983) 24) for incompressible cores, eq. (4) in the limit
-// K_Omega -> inf (eta = inf, eq. (24)): velocity Verlet with the constraint force mu dA/dx on each
-// incompressible shell, mu = s p. Position stage: the polygon area is a quadratic form, so
-// A(y + lambda d) = A(y) + lambda dA/dx(y).d + lambda^2 A(d) with y = x + dt v_half, d = dt^2/2 M^-1
-// dA/dx(x), and A = A0 is solved exactly for lambda (the root of smallest magnitude). Velocity stage: dA/dx .
-// v = 0 at the new positions (linear in mu). f_ keeps the constraint force, so the stored force is the one
-// the shell feels (relaxation criterion) and the next position stage only adds the increment of the
-// multiplier.
+// K_Omega -> inf (eta = inf, eq. (24), decision spd-eta-infinity): velocity Verlet with the constraint force
+// mu dA/dx on each incompressible shell, its two stages imposed by the cores (spd/shell_cores.hpp): the
+// position stage corrects the half-step velocities so that the drift keeps the areas A0, the velocity stage
+// keeps dA/dt = 0 at the new positions and leaves the constraint force in f_, so that the stored force is the
+// one the shell feels (relaxation criterion).
 void ShellModel::step_constrained(double dt, double damping)
 {
     Eigen::VectorXd f = f_;
     add_viscous_damping(f, v_, damping);
     v_.array() += 0.5 * dt * inverse_mass_.array() * f.array();
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& s = shells_[p];
-        if (!s.incompressible()) continue;
-        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
-        const Eigen::VectorXd G = area_gradient(s, x_.segment(o, n));
-        const Eigen::VectorXd MG = inverse_mass_.segment(o, n).cwiseProduct(G);
-        const Eigen::VectorXd y = x_.segment(o, n) + dt * v_.segment(o, n);
-        const Eigen::VectorXd d = 0.5 * dt * dt * MG;
-        const auto area_of = [&](const Eigen::VectorXd& xs) {
-            return polygon_signed_area(Eigen::Map<const Points<2>>(xs.data(), 2, s.count));
-        };
-        const double a = area_of(d), b = area_gradient(s, y).dot(d);
-        const double c = area_of(y) - core_V0_[p] / s.depth;
-        const double discriminant = b * b - 4 * a * c;
-        if (discriminant < 0 || b == 0)
-            throw NumericalError(
-                "incompressible core (area constraint)", steps_,
-                "no multiplier restores the area within one step: the time step is too large "
-                "for the motion");
-        const double lambda = -2 * c / (b + std::copysign(std::sqrt(discriminant), b));
-        v_.segment(o, n) += 0.5 * dt * lambda * MG;
-    }
+    cores_.constrain_positions(view(), inverse_mass_, dt, v_, steps_);
     x_ += dt * v_;
     compute_forces(dt);
     f = f_;
     add_viscous_damping(f, v_, damping);
     v_.array() += 0.5 * dt * inverse_mass_.array() * f.array();
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& s = shells_[p];
-        if (!s.incompressible()) continue;
-        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
-        const Eigen::VectorXd G = area_gradient(s, x_.segment(o, n));
-        const Eigen::VectorXd MG = inverse_mass_.segment(o, n).cwiseProduct(G);
-        const double mu = -G.dot(v_.segment(o, n)) / (0.5 * dt * G.dot(MG));
-        v_.segment(o, n) += 0.5 * dt * mu * MG;
-        f_.segment(o, n) += mu * G;
-        core_p_[p] = mu / s.depth;
-    }
+    cores_.constrain_velocities(view(), inverse_mass_, dt, v_, f_);
 }
 
 double ShellModel::min_vertex_mass() const
@@ -423,64 +348,6 @@ double ShellModel::min_vertex_mass() const
     for (Eigen::Index d = 0; d < inverse_mass_.size(); ++d)
         if (inverse_mass_[d] > 0) m = std::min(m, 1.0 / inverse_mass_[d]);
     return m;
-}
-
-double ShellModel::critical_time_step() const
-{
-    double k_max = contacts_.law().k_n;
-    if (!links_.empty()) k_max = std::max({k_max, links_.law().k_n, links_.law().k_t});
-    for (std::size_t p = 0; p < shells_.size(); ++p) {
-        const Shell& s = shells_[p];
-        if (s.rigid) continue;
-        double l_min = INFINITY;
-        for (int k = 0; k < s.elements(); ++k)
-            l_min = std::min(l_min, length_prev_[s.first + k]);
-        k_max = std::max({k_max, s.laws.k_s, 4.0 * s.laws.k_b / (l_min * l_min)});
-        if (s.closed && s.K_Omega > 0 && !s.incompressible()) {
-            const double gradient_sq = area_gradient(s, x_.segment(2 * s.first, 2 * s.count)).squaredNorm();
-            k_max = std::max(k_max, s.K_Omega * s.depth * s.depth * gradient_sq / core_V0_[p]);
-        }
-    }
-    return std::sqrt(min_vertex_mass() / k_max);
-}
-
-namespace {
-// Largest h of the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v': the root of
-// h^2 omega^2 + 2 h gamma = 4.
-double damped_oscillator_limit(double omega2, double gamma)
-{
-    return (std::sqrt(gamma * gamma + 4 * omega2) - gamma) / omega2;
-}
-} // namespace
-
-double ShellModel::stable_time_step() const
-{
-    double limit = critical_time_step();
-    if (contacts_.enabled()) {
-        const ContactLaw& contact = contacts_.law();
-        const double m = min_vertex_mass(), omega2 = contact.k_n / m, gamma = contact.normal_damping / m;
-        limit = std::min(limit, damped_oscillator_limit(omega2, gamma)); // a vertex on a wall
-        const auto free_shells =
-            std::count_if(shells_.begin(), shells_.end(), [](const Shell& s) { return !s.rigid; });
-        if (free_shells > 1) limit = std::min(limit, damped_oscillator_limit(4 * omega2, 4 * gamma));
-    }
-    return limit;
-}
-
-void ShellModel::check_time_step(double dt) const
-{
-    const double dt_c = critical_time_step(), limit = stable_time_step();
-    if (!(dt > 0)) // a dt_factor that underflows: every step would leave the state as it is
-        throw InputError("the time step dt = " + number_text(dt) + " s (dt_c = " + number_text(dt_c) +
-                         " s); allowed: dt_factor giving dt > 0");
-    if (dt <= limit) return;
-    std::ostringstream cause;
-    cause << "dt = " << dt << " s (dt/dt_c = " << dt / dt_c << ") is above the stability limit " << limit
-          << " s (" << limit / dt_c << " dt_c, dt_c = sqrt(m/k_max) = " << dt_c
-          << " s): the smallest of dt_c and the damped-contact limits (sqrt(gamma^2 + 4 omega^2) - "
-             "gamma)/omega^2 of velocity Verlet for a vertex on a wall and, between free shells, for a "
-             "vertex-vertex pair (decisions spd-stability-limit, spd-vertex-pair-stability)";
-    throw NumericalError("time step", steps_, cause.str());
 }
 
 double ShellModel::shell_stretch_energy(const Shell& s) const
@@ -519,10 +386,7 @@ double ShellModel::elastic_energy(int shell) const
 {
     const Shell& s = shells_[shell];
     if (s.rigid) return 0.0;
-    double W = shell_stretch_energy(s) + shell_bending_energy(s);
-    if (s.closed && s.K_Omega > 0 && !s.incompressible())
-        W += core_V0_[shell] * core_p_[shell] * core_p_[shell] / (2 * s.K_Omega);
-    return W;
+    return shell_stretch_energy(s) + shell_bending_energy(s) + cores_.energy(view(), shell);
 }
 
 void ShellModel::stop()
@@ -578,9 +442,9 @@ void ShellModel::transfer(Archive& archive)
         archive(*state);
     contacts_.transfer_forces(archive);
     archive(edge_);
-    for (std::vector<double>* history :
-         {&length_prev_, &axial_, &torque_, &core_V_prev_, &core_p_, &core_V0_})
+    for (std::vector<double>* history : {&length_prev_, &axial_, &torque_})
         archive(*history);
+    cores_.transfer(archive);
     contacts_.transfer_normals(archive);
     archive(shell_of_);
     contacts_.transfer_candidates(archive, shell_of_, steps_);
@@ -615,13 +479,13 @@ long relax(ShellModel& model, double dt, double damping, double force_tolerance,
           << " N > tolerance " << force_tolerance << " N, on " << model.describe_vertex(i) << ")";
     if (reverses)
         cause << ": its force reverses at every step, the period-2 oscillation of the scheme: dt = "
-              << dt / model.critical_time_step()
+              << dt / critical_time_step(model)
               << " dt_c is above the stability limit of the contacts there (the limit checked is "
-              << model.stable_time_step() / model.critical_time_step() << " dt_c)";
+              << stable_time_step(model) / critical_time_step(model) << " dt_c)";
     else
         cause << ": damping too weak or too strong for the slowest mode, or dt = "
-              << dt / model.critical_time_step() << " dt_c too close to the stability limit "
-              << model.stable_time_step() / model.critical_time_step() << " dt_c (contact chatter)";
+              << dt / critical_time_step(model) << " dt_c too close to the stability limit "
+              << stable_time_step(model) / critical_time_step(model) << " dt_c (contact chatter)";
     throw NumericalError("quasi-static relaxation", model.steps(), cause.str());
 }
 

@@ -9,10 +9,12 @@
 // evaluation from the change of geometry since the previous one. Cohesive links between shells (section 6)
 // are optional per-link records (lib/spd/cohesive_link.hpp) with their broken state.
 //
-// ShellModel owns the vertex state, the shells' laws and cores (eqs. (1)-(4), the RATTLE constraint of an
-// incompressible core) and the time step; two parts do one job each: the contacts (ShellContacts,
-// spd/shell_contacts.hpp: candidates, eqs. (6)-(7), the gather) and the cohesive links (ShellLinks,
-// spd/shell_links.hpp).
+// ShellModel owns the vertex state, the shells' laws (eqs. (1)-(3)) and the time step (velocity Verlet, its
+// RATTLE form with an incompressible core); three parts do one job each: the cores (ShellCores,
+// spd/shell_cores.hpp: eq. (4), the RATTLE constraint of an incompressible core), the contacts
+// (ShellContacts, spd/shell_contacts.hpp: candidates, eqs. (6)-(7), the gather) and the cohesive links
+// (ShellLinks, spd/shell_links.hpp). The time-step limits (dt_c and the stability limit a run's dt is checked
+// against) are functions of the model, spd/time_step_limits.hpp.
 #pragma once
 
 #include "core/resources.hpp"
@@ -21,6 +23,7 @@
 #include "spd/cohesive_link.hpp"
 #include "spd/shell.hpp"
 #include "spd/shell_contacts.hpp"
+#include "spd/shell_cores.hpp"
 #include "spd/shell_links.hpp"
 
 #include <Eigen/Core>
@@ -55,6 +58,7 @@ class ShellModel
     // Freezes one degree of freedom (0 = x, 1 = y) of a vertex: it keeps its velocity (zero by default).
     void freeze(int vertex, int component);
     void set_contact_law(ContactLaw law) { contacts_.set_law(law); }
+    const ContactLaw& contact_law() const { return contacts_.law(); }
     // Cohesive links between vertices of different shells (section 6, lib/spd/cohesive_link.hpp): their
     // forces are added at each force evaluation, a link whose yield function eq. (39) reaches 0 breaks for
     // good and adds no force from then on (decision spd-tissue-link-breaking). Scenes without links pay
@@ -82,31 +86,10 @@ class ShellModel
     // the step (a blow-up that can pass through elements), naming the vertex and its particle.
     void step(double dt, double damping);
 
-    // SPD section 2.4: dt_c = sqrt(m / k_max), with k_max the largest of k_s, the bending stiffness
-    // 4 k_b / l^2 seen by a vertex, the contact stiffness k_n, the link stiffnesses and the core stiffness
-    // K_Omega s^2 sum_k |dA/dx_k|^2 / V0 (the eigenvalue of the rank-one core Hessian, decision
-    // spd-dtc-kmax).
-    double critical_time_step() const;
-
-    // Largest stable time step of the scheme (decision spd-stability-limit): min(dt_c, the limit of the
-    // damped normal contact). The contact damping c_n enters with the half-step velocity, so a vertex on a
-    // wall is the damped oscillator v' = v - h (omega^2 x + gamma v), x' = x + h v' (omega^2 = k_n/m,
-    // gamma = c_n/m), stable iff h^2 omega^2 + 2 h gamma < 4:
-    //   h < (sqrt(gamma^2 + 4 omega^2) - gamma)/omega^2,
-    // i.e. 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.83 sqrt(m/k_n) for the critical c_n = 2 sqrt(m k_n). Two free
-    // shells can touch vertex to vertex: each vertex then lies within reach of the other's element end, so
-    // the contact is counted both ways, and the relative motion of the two vertices (reduced mass m/2) sees
-    // 2 k_n and 2 c_n: omega^2 = 4 k_n/m, gamma = 4 c_n/m, the limit (sqrt(5) - 2) sqrt(m/k_n)
-    // = 0.236 sqrt(m/k_n) for the critical c_n (decision spd-vertex-pair-stability). Above it the
-    // pair flips at every step, a limit cycle that the one-sided normal force keeps bounded.
-    double stable_time_step() const;
-    // Throws NumericalError (exit 3) naming dt, the limit and dt_c if dt > stable_time_step().
-    void check_time_step(double dt) const;
-
     // Measures.
     double area(int shell) const; // polygon area [m^2], CCW positive
     // Area of a closed shell when it was added (its reference geometry) [m^2].
-    double reference_area(int shell) const { return core_V0_[shell] / shells_[shell].depth; }
+    double reference_area(int shell) const { return cores_.reference_volume(shell) / shells_[shell].depth; }
     double stretch_energy() const; // W_s = sum F^2 / (2 k_s) over elastic shells [J]
     double bending_energy() const; // W_b = sum M^2 / (2 k_b) [J]
     // Elastic energy stored in one shell: its W_s + W_b, plus the core energy V0 p^2 / (2 K_Omega) of the
@@ -114,7 +97,7 @@ class ShellModel
     double elastic_energy(int shell) const;
     // From eq. (4), or the constraint multiplier of an incompressible core; excluding the applied pressure
     // [Pa].
-    double core_pressure(int shell) const { return core_p_[shell]; }
+    double core_pressure(int shell) const { return cores_.pressure(shell); }
     double kinetic_energy() const;
     // Largest unbalanced force on a free degree of freedom, damping excluded [N].
     double max_free_force() const;
@@ -133,6 +116,11 @@ class ShellModel
     const std::vector<Shell>& shells() const { return shells_; }
     int vertices() const { return static_cast<int>(x_.size() / 2); }
     double element_force(int element_first_vertex) const { return axial_[element_first_vertex]; }
+    // Length of an element at the last force evaluation [m].
+    double element_length(int element_first_vertex) const { return length_prev_[element_first_vertex]; }
+    // The stiffness of a shell's finite core, K_Omega s^2 sum_k |dA/dx_k|^2 / V0 (ShellCores::stiffness, for
+    // dt_c: spd/time_step_limits.hpp); 0 without one [N/m].
+    double core_stiffness(int shell) const { return cores_.stiffness(view(), shell); }
     double hinge_torque(int vertex) const { return torque_[vertex]; }
 
     // Sets the velocities of all free degrees of freedom to zero (a packing released at rest).
@@ -162,12 +150,11 @@ class ShellModel
     double neighbour_skin() const { return contacts_.skin(); }
 
   private:
-    // The state its parts read: the contacts and the links.
+    // The state its parts read: the cores, the contacts and the links.
     ShellView view() const { return {x_, v_, shells_, shell_of_}; }
     void internal_forces(const Shell& s);
     double shell_stretch_energy(const Shell& s) const;
     double shell_bending_energy(const Shell& s) const;
-    void core_forces(int index);
     void step_constrained(double dt, double damping);
     // Parallel regions open above this many vertices: below, a region costs more than it saves.
     static constexpr int parallel_vertices = 2000;
@@ -195,10 +182,6 @@ class ShellModel
                std::isfinite(v_[2 * i + 1]);
     }
     void throw_step_too_long(double dt) const;
-    // dA/dx_k = perp(x_(k+1) - x_(k-1))/2, perp(d) = (d_y, -d_x), of a closed shell whose vertex coordinates
-    // are xs (2 count entries): outward for a CCW polygon [m].
-    static Vec2 vertex_area_gradient(const double* xs, int count, int k);
-    Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::VectorXd>& xs) const;
     int shell_of(int vertex) const { return shell_of_[vertex]; }
     // The free degree of freedom with the largest |f| (damping excluded) and that |f|.
     std::pair<Eigen::Index, double> largest_free_force() const;
@@ -217,8 +200,8 @@ class ShellModel
     // the rotation of this call.
     std::vector<Vec2> edge_;
     std::vector<double> edge_squared_, edge_rotation_;
-    std::vector<double> core_V_prev_, core_p_, core_V0_; // per shell
-    std::vector<int> shell_of_;                          // per vertex
+    std::vector<int> shell_of_; // per vertex
+    ShellCores cores_;
     ShellContacts contacts_;
     ShellLinks links_;
     std::int64_t steps_ = 0;

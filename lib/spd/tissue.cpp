@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "spd/assembly.hpp"
+#include "spd/time_step_limits.hpp"
 
 #include <voro++.hh>
 
@@ -385,8 +386,8 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
     ShellModel& model = tissue.model;
     const Shell& first = model.shells()[tissue.cells.front()];
     const double m = model.min_vertex_mass(), k_s = first.laws.k_s;
-    result.dt = setup.dt_factor * model.critical_time_step();
-    model.check_time_step(result.dt);
+    result.dt = setup.dt_factor * critical_time_step(model);
+    check_time_step(model, result.dt);
     const double t_c = std::sqrt(m / k_s);
     result.speed = setup.pull_rate * tissue.height0 / t_c;
     for (int i : tissue.top)

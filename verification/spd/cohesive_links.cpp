@@ -6,6 +6,7 @@
 #include "core/rng.hpp"
 #include "dpm/local_derivatives.hpp"
 #include "spd/cohesive_link.hpp"
+#include "spd/time_step_limits.hpp"
 #include "spd/tissue.hpp"
 #include "support/tolerance.hpp"
 
@@ -212,7 +213,7 @@ TEST_CASE(
     "a link breaks at f_n = f_n^0 in tension, never re-forms, and leaves a Coulomb contact [SPD section 6]")
 {
     TwoCells t = two_cells(0.3);
-    const double dt = 0.25 * t.model.critical_time_step();
+    const double dt = 0.25 * critical_time_step(t.model);
     const double damping = 2 * std::sqrt(t.model.shells()[t.upper].laws.k_s); // critical for a k_s spring
     // A pull below the threshold (2 links, |f_n^0| = 5 N each): intact, each carries half the load at rest.
     load_upper(t, Vec2(0, 8.0));
@@ -309,7 +310,7 @@ TEST_CASE("a small elastic tissue under a small imposed strain carries the same 
     setup.cohesion = 1e3; // no link breaks
     Tissue tissue = build_tissue(setup);
     ShellModel& model = tissue.model;
-    const double dt = 0.25 * model.critical_time_step();
+    const double dt = 0.25 * critical_time_step(model);
     // Impose eps_h = 1e-3 by moving the top clamp, then relax at rest.
     for (int i : tissue.top)
         model.set_vertex(i, model.vertex(i) + Vec2(0, 1e-3 * tissue.height0));
@@ -343,7 +344,7 @@ TEST_CASE(
         REQUIRE(tissue.model.vertices() > 2000);
         for (int i : tissue.top)
             tissue.model.set_vertex_velocity(i, Vec2(0, 1.0));
-        const double dt = 0.25 * tissue.model.critical_time_step();
+        const double dt = 0.25 * critical_time_step(tissue.model);
         for (int n = 0; n < 50; ++n)
             tissue.model.step(dt, 0.0);
         Eigen::VectorXd f(2 * tissue.model.vertices());

@@ -6,6 +6,7 @@
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
 #include "spd/force_laws.hpp"
+#include "spd/time_step_limits.hpp"
 #include "support/tolerance.hpp"
 
 #include <omp.h>
@@ -42,7 +43,7 @@ Jostling jostling_rings(int particles, double speed_per_step)
     const RingScales sc = ring_scales(setup.ring);
     j.k_n = sc.laws.k_s;
     j.a.model.set_contact_law({j.k_n, 0.0, 0.0, 0.0});
-    j.dt = 0.5 * j.a.model.critical_time_step();
+    j.dt = 0.5 * critical_time_step(j.a.model);
     Rng rng(7);
     for (int shell : j.a.particles) {
         const double angle = rng.uniform(0, 2 * std::numbers::pi);

@@ -5,6 +5,7 @@
 #include "core/geometry.hpp"
 #include "spd/calibration.hpp"
 #include "spd/shell_model.hpp"
+#include "spd/time_step_limits.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
@@ -156,7 +157,7 @@ double block_velocity(double T_over_mu_mg, double time)
     model.add_shell(c, block, m);
     model.set_contact_law({k, k, mu});
     model.set_applied_force(2, Vec2(T_over_mu_mg * mu * m * g, -m * g));
-    const double dt = 0.05 * model.critical_time_step();
+    const double dt = 0.05 * critical_time_step(model);
     for (double t = 0; t < time; t += dt)
         model.step(dt, 0.0);
     return model.velocity(2).x();

@@ -49,8 +49,8 @@ TEST_CASE(
 {
     // For a ring dominated by k_s the stiffest mode (alternating stretch) has omega^2 = 4 k_s/m (1 +
     // O(h^2/l^2)), so velocity Verlet is stable up to dt = sqrt(m/k_s) = dt_c: 0.95 dt_c relaxes, 1.1 dt_c
-    // is refused before the run (ShellModel::check_time_step) with a NumericalError (exit 3); that it would
-    // diverge is shown in stability.cpp (bounded at 0.99 dt_c, blow-up at 1.01 dt_c).
+    // is refused before the run (check_time_step, spd/time_step_limits.hpp) with a NumericalError (exit 3);
+    // that it would diverge is shown in stability.cpp (bounded at 0.99 dt_c, blow-up at 1.01 dt_c).
     RingSetup setup = ring(32, 0.0);
     const double p = 1e-5 * ring_scales(setup).K_shell;
     setup.dt_factor = 0.95;

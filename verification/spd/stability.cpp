@@ -3,6 +3,7 @@
 // contact, 2 (sqrt(2) - 1) sqrt(m/k_n) = 0.828 dt_c; a larger dt stops the run with exit 3 naming the limit.
 #include "core/errors.hpp"
 #include "spd/ring.hpp"
+#include "spd/time_step_limits.hpp"
 #include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"
 
@@ -25,7 +26,7 @@ double free_ring_kinetic_energy_max(double dt_factor, int steps)
     for (int i = 0; i < setup.nodes; ++i)
         model.set_vertex(i, model.vertex(i) + 1e-6 * Vec2(std::sin(7.3 * i), std::cos(3.1 * i)));
     model.compute_forces(0.0);
-    const double dt = dt_factor * model.critical_time_step();
+    const double dt = dt_factor * critical_time_step(model);
     double K = 0;
     try {
         for (int n = 0; n < steps; ++n) {
@@ -48,7 +49,7 @@ double measured_compression_limit(int nodes, double strain)
     RingSetup setup;
     setup.nodes = nodes;
     RingBetweenWalls w = ring_between_walls(setup);
-    const double dt_c = w.model.critical_time_step(), dt0 = 0.5 * dt_c, damping = ring_damping(setup);
+    const double dt_c = critical_time_step(w.model), dt0 = 0.5 * dt_c, damping = ring_damping(setup);
     const double push = 1e-6 * setup.radius;
     const double tolerance = 1e-6 * ring_scales(setup).flexural_rigidity / (setup.radius * setup.radius);
     const int steps = 20000;
@@ -106,7 +107,7 @@ VertexPair vertex_pair()
     }
     p.damping = ring_damping(p.setup);
     p.tolerance = 1e-4 * sc.characteristic.F_star;
-    relax(p.model, 0.1 * p.model.critical_time_step(), p.damping, p.tolerance, 2'000'000);
+    relax(p.model, 0.1 * critical_time_step(p.model), p.damping, p.tolerance, 2'000'000);
     return p;
 }
 
@@ -125,7 +126,7 @@ bool vertex_pair_relaxes(const VertexPair& pair, double factor)
 {
     ShellModel m = pushed_together(pair);
     try {
-        relax(m, factor * m.critical_time_step(), pair.damping, pair.tolerance, 200'000);
+        relax(m, factor * critical_time_step(m), pair.damping, pair.tolerance, 200'000);
     } catch (const NumericalError&) {
         return false;
     }
@@ -153,7 +154,7 @@ TEST_CASE("a blow-up names the step, the first non-finite vertex and its particl
     for (int i = 32; i < 64; ++i)
         model.set_vertex(i, model.vertex(i) + 1e-6 * Vec2(std::sin(7.3 * i), std::cos(3.1 * i)));
     model.compute_forces(0.0);
-    const double dt = 1.2 * model.critical_time_step();
+    const double dt = 1.2 * critical_time_step(model);
     std::string message;
     try {
         for (int n = 0; n < 1'000'000; ++n)
@@ -177,7 +178,7 @@ TEST_CASE("an energy blow-up in contact stops when a vertex moves farther than i
     for (int i = 0; i < setup.nodes; ++i) // pressed 1e-3 R into the bottom wall
         w.model.set_vertex(i, w.model.vertex(i) + Vec2(0, -1e-3 * setup.radius));
     w.model.compute_forces(0.0);
-    const double dt = 1.1 * w.model.stable_time_step();
+    const double dt = 1.1 * stable_time_step(w.model);
     NumericalError caught("", 0, "");
     try {
         for (int n = 0; n < 100'000; ++n)
@@ -210,10 +211,10 @@ TEST_CASE(
         setup.nodes = nodes;
         const RingBetweenWalls w = ring_between_walls(setup);
         const ShellLaws laws = ring_scales(setup).laws;
-        const double dt_c = w.model.critical_time_step(),
+        const double dt_c = critical_time_step(w.model),
                      k_n = laws.k_s; // k_n = k_s (decision spd-ring-walls)
         const double gamma = 2 * std::sqrt(k_n / setup.vertex_mass) * dt_c; // in units of 1/dt_c
-        const double predicted = w.model.stable_time_step() / dt_c;
+        const double predicted = stable_time_step(w.model) / dt_c;
         CHECK_CLOSE(predicted, damped_limit(k_n / laws.k_s, gamma), (Tolerance{1e-12, 0}));
         CHECK_CLOSE(predicted, 2 * (std::sqrt(2.0) - 1), (Tolerance{1e-12, 0}));
         // The largest eigenvalue of the stiffness seen by the normal motion of a contact vertex is at least
@@ -269,7 +270,7 @@ TEST_CASE("two rings touching vertex to vertex: the largest stable dt is the ver
           "spd-vertex-pair-stability]")
 {
     const VertexPair pair = vertex_pair();
-    const double predicted = pair.model.stable_time_step() / pair.model.critical_time_step();
+    const double predicted = stable_time_step(pair.model) / critical_time_step(pair.model);
     // k_n = k_s = k_max: omega^2 = 4 k_n/m, gamma = 8 sqrt(k_n/m), h^2 4 + 16 h = 4.
     CHECK_CLOSE(predicted, std::sqrt(5.0) - 2, (Tolerance{1e-12, 0}));
     double stable = 0.15, unstable = 0.35; // bisection to 0.002
@@ -292,7 +293,7 @@ TEST_CASE("a relaxation that fails names the vertex holding the residual and tel
 {
     const VertexPair pair = vertex_pair();
     ShellModel flipping = pushed_together(pair);
-    const double dt_c = flipping.critical_time_step();
+    const double dt_c = critical_time_step(flipping);
     std::string message;
     try {
         relax(flipping, 0.25 * dt_c, pair.damping, pair.tolerance, 200'000);

@@ -5,6 +5,7 @@
 #include "core/output.hpp"
 #include "spd/scenes/scenes.hpp"
 #include "spd/shell_model.hpp"
+#include "spd/time_step_limits.hpp"
 #include "spd/tissue_measures.hpp"
 #include "spd/vtk_frames.hpp"
 
@@ -343,7 +344,7 @@ void run_tissue(const TissueOptions& options, RunContext& context)
     write_links(context, tissue, setup.radius); // the set-up, before the pull moves and breaks them
     // Fig. 31: the forces at which the first link breaks, against eq. (39).
     const LinkStrength strength =
-        measure_link_strength(tissue, pulling.dt_factor * tissue.model.critical_time_step());
+        measure_link_strength(tissue, pulling.dt_factor * critical_time_step(tissue.model));
     auto progress = context.progress("spd.tissue");
     const PullResult result = pull(
         tissue, pulling, [&](double fraction) { progress.update(fraction); }, context.checkpoints(),
