@@ -1,4 +1,5 @@
 #include "spd/beam.hpp"
+#include "core/step_count.hpp"
 
 #include "core/errors.hpp"
 #include "spd/shell_model.hpp"
@@ -85,7 +86,9 @@ BeamResult simulate_beam(const BeamSetup& setup, double dt_factor, double force_
     check_time_step(model, r.dt);
 
     model.set_applied_force(load, Vec2(0.0, -setup.force));
-    const long max_steps = static_cast<long>(200.0 * 2 * std::numbers::pi / (omega1 * r.dt)) + 10000;
+    const long max_steps = checked_step_count(std::floor(200.0 * 2 * std::numbers::pi / (omega1 * r.dt)),
+                                              "the relaxation budget", "dt_factor", dt_factor) +
+                           10000;
     std::function<void(long)> after_check;
     if (observe) {
         observe(model, 0, false);

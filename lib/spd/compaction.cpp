@@ -1,4 +1,5 @@
 #include "spd/compaction.hpp"
+#include "core/step_count.hpp"
 
 #include "core/checkpoint.hpp"
 #include "core/errors.hpp"
@@ -182,7 +183,9 @@ void settle(const CompactionSetup& setup, Deposit& d, const std::function<void(c
     // damping of the ovalisation mode, 2 m omega_2 (ring_damping), so that the rings still fall and rearrange
     // (rigid-body motion is not over-damped); budget 4000 ovalisation periods.
     const double omega2 = ring_damping(setup.assembly.ring) / (2 * setup.assembly.ring.vertex_mass);
-    const long budget = static_cast<long>(4000 * 2 * pi / (omega2 * d.dt));
+    const long budget =
+        checked_step_count(std::floor(4000 * 2 * pi / (omega2 * d.dt)), "the deposition budget", "dt_factor",
+                           setup.assembly.ring.dt_factor);
     d.steps = relax(model, d.dt, 0.05 * ring_damping(setup.assembly.ring), setup.rest_tolerance * d.weight,
                     budget, d.steps, [&](long n) {
                         d.steps = n;
@@ -294,7 +297,8 @@ CompactionResult compaction(const CompactionSetup& setup,
     const RingSetup& ring = setup.assembly.ring;
     const double H_min = result.height0 * std::exp(-setup.strain_max);
     const long half_steps =
-        static_cast<long>(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)));
+        checked_step_count(std::ceil((result.height0 - H_min) / (result.wall_speed * result.dt)),
+                           "one half cycle", "dt_factor", setup.assembly.ring.dt_factor);
     const long interval = std::max(1L, half_steps / setup.records);
     // One half cycle: the top wall at `speed` until the height passes `target`; the last step is shortened
     // by placing the wall exactly at the target. It continues after the stage's steps already taken.

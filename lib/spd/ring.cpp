@@ -1,4 +1,5 @@
 #include "spd/ring.hpp"
+#include "core/step_count.hpp"
 
 #include "core/errors.hpp"
 #include "spd/time_step_limits.hpp"
@@ -129,8 +130,10 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
     const double slow_down =
         std::sqrt(std::max(1.0, sc.flexural_rigidity / (R * R) / sc.characteristic.F_2star));
     const double move_time = 2 * 2 * pi / omega2 * slow_down;
-    const int move_steps = std::max(1, static_cast<int>(move_time / result.dt));
-    const long max_relax = static_cast<long>(400 * slow_down * 2 * pi / (omega2 * result.dt));
+    const long move_steps = std::max(1L, checked_step_count(std::floor(move_time / result.dt),
+                                                            "one load step", "dt_factor", setup.dt_factor));
+    const long max_relax = checked_step_count(std::floor(400 * slow_down * 2 * pi / (omega2 * result.dt)),
+                                              "the relaxation budget", "dt_factor", setup.dt_factor);
 
     double gap = b0; // wall gap of the mid-line
     const bool plastic = std::isfinite(setup.plastic_ratio);
@@ -183,7 +186,7 @@ CompressionResult ring_compression(const RingSetup& setup, double strain_max, do
         const double speed = 0.5 * (gap - target) / (move_steps * result.dt);
         model.set_velocity(top_wall, Vec2(0, -speed));
         model.set_velocity(bottom_wall, Vec2(0, speed));
-        for (int n = 0; n < move_steps; ++n)
+        for (long n = 0; n < move_steps; ++n)
             model.step(result.dt, damping);
         model.set_velocity(top_wall, Vec2::Zero());
         model.set_velocity(bottom_wall, Vec2::Zero());

@@ -143,6 +143,18 @@ void on_one_thread(std::exception_ptr& failure, Task&& task)
     }
 }
 
+// Keeps the exception of iteration `iteration` of a work-shared loop if no earlier iteration failed: the
+// region reports the same failure whatever the number of threads.
+template <class Flags>
+void keep_first_failure(Flags& flags, long iteration, std::exception_ptr failure)
+{
+#pragma omp critical(spd_region_failure)
+    if (!flags.failure || iteration < flags.failed_iteration) {
+        flags.failure = std::move(failure);
+        flags.failed_iteration = iteration;
+    }
+}
+
 // Sets flag to true from one thread of a region (flags only ever turn true within a region).
 void raise_flag(bool& flag)
 {
@@ -188,9 +200,15 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     }
     bool overlap = false;
 #pragma omp for schedule(static)
-    for (long g = 0; g < n_groups; ++g)
-        overlap = contacts_.evaluate_group(view(), g, dt) || overlap;
+    for (long g = 0; g < n_groups; ++g) {
+        try {
+            overlap = contacts_.evaluate_group(view(), g, dt) || overlap;
+        } catch (...) { // e.g. a degenerate element of a state gone non-finite
+            keep_first_failure(flags, g, std::current_exception());
+        }
+    }
     if (overlap) raise_flag(flags.overlap); // acted on after the region
+    if (flags.failure) return;              // set before the barrier that ends the loop: every thread sees it
     if (!links_.empty()) on_one_thread(flags.failure, [&] { links_.add_forces(view(), f_); });
     if (flags.failure) return;
 #pragma omp for schedule(static) nowait // the region ends next, or its owner goes on with the same vertices
@@ -277,22 +295,34 @@ void ShellModel::step(double dt, double damping)
 }
 
 // In the order a serial step meets them: an exception of a task, a contact overlap (during the force
-// evaluation), a non-finite state, a step longer than a contact radius.
+// evaluation), a non-finite state, a step longer than a contact radius. A task that failed on a non-finite
+// state (a contact with an element of non-finite length) failed because of it: the state is the diagnosis.
 void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
 {
-    if (flags.failure) std::rethrow_exception(flags.failure);
-    if (flags.overlap) contacts_.throw_overlap(view(), steps_);
-    if (flags.non_finite) {
-        int bad = 0; // the first vertex with a non-finite position or velocity
-        while (vertex_finite(bad))
-            ++bad;
-        std::ostringstream cause;
-        cause << "vertex " << bad << " of particle " << shell_of(bad)
-              << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step(*this)
-              << ", dt_c = sqrt(m/k_max) = " << critical_time_step(*this) << " s) or an unstable load";
-        throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
+    if (flags.failure) {
+        if (first_non_finite_vertex() < 0) std::rethrow_exception(flags.failure);
+        throw_non_finite(dt);
     }
+    if (flags.overlap) contacts_.throw_overlap(view(), steps_);
+    if (flags.non_finite) throw_non_finite(dt);
     if (flags.too_long) throw_step_too_long(dt);
+}
+
+int ShellModel::first_non_finite_vertex() const
+{
+    for (int i = 0; i < vertices(); ++i)
+        if (!vertex_finite(i)) return i;
+    return -1;
+}
+
+void ShellModel::throw_non_finite(double dt) const
+{
+    const int bad = first_non_finite_vertex();
+    std::ostringstream cause;
+    cause << "vertex " << bad << " of particle " << shell_of(bad)
+          << " first: time step above the stability limit (dt/dt_c = " << dt / critical_time_step(*this)
+          << ", dt_c = sqrt(m/k_max) = " << critical_time_step(*this) << " s) or an unstable load";
+    throw NumericalError("vertex positions (non-finite)", steps_, cause.str());
 }
 
 // A vertex that moves farther than its contact radius r in one step can pass through an element: the

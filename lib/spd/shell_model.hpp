@@ -167,6 +167,7 @@ class ShellModel
         bool non_finite = false; // a position or velocity is not finite (exit 3)
         bool too_long = false;   // a vertex moved farther than its contact radius in one step (exit 3)
         std::exception_ptr failure;
+        long failed_iteration = -1; // of a work-shared loop: the lowest one that failed is kept
     };
     // The force evaluation inside an open parallel region, with two per-vertex hooks that let a time step
     // share its loops over the vertices: before(i) runs before vertex i's force is reset, after(i) once its
@@ -182,6 +183,8 @@ class ShellModel
                std::isfinite(v_[2 * i + 1]);
     }
     void throw_step_too_long(double dt) const;
+    int first_non_finite_vertex() const; // -1 if every position and velocity is finite
+    void throw_non_finite(double dt) const;
     int shell_of(int vertex) const { return shell_of_[vertex]; }
     // The free degree of freedom with the largest |f| (damping excluded) and that |f|.
     std::pair<Eigen::Index, double> largest_free_force() const;

@@ -1,4 +1,5 @@
 #include "spd/tissue.hpp"
+#include "core/step_count.hpp"
 
 #include "core/checkpoint.hpp"
 
@@ -394,7 +395,8 @@ PullResult pull(Tissue& tissue, const PullSetup& setup, const std::function<void
         model.set_vertex_velocity(i, Vec2(0, result.speed));
     const double damping = setup.damping * 2 * std::sqrt(m * k_s);
     const double H_end = tissue.height0 * std::exp(setup.strain_max);
-    const long total = static_cast<long>(std::ceil((H_end - tissue.height0) / (result.speed * result.dt)));
+    const long total = checked_step_count(std::ceil((H_end - tissue.height0) / (result.speed * result.dt)),
+                                          "the pull", "dt_factor", setup.dt_factor);
     const long interval = std::max(1L, total / setup.records);
     const long snapshot_interval = std::max(1L, total / setup.snapshots);
     const auto snapshot = [&] {

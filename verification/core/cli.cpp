@@ -231,6 +231,18 @@ TEST_CASE("a run that cannot take the steps it is asked for is refused (exit 2),
     const Outcome tiny_mass =
         run_softgrain("run core.harmonic --set mass=1e-320" + out); // omega = inf: 0 steps
     CHECK(tiny_mass.exit_code == 2);
+    // The SPD protocols count their load steps, relaxation budgets and pulls from dt = dt_factor dt_c: a
+    // dt_factor of 1e-310 made the count overflow an int (undefined), the walls jump to infinity and a contact
+    // throw inside the OpenMP region (exit 134), or the budget turn negative (exit 3 "not reached in
+    // -9223372036854775808 steps"). Each is refused before the run, naming dt_factor.
+    for (const std::string scene :
+         {"spd.ring_compression", "compare.ring", "spd.beam", "spd.compaction", "spd.tissue"}) {
+        CAPTURE(scene);
+        const Outcome tiny = run_softgrain("run " + scene + " --set dt_factor=1e-310" + out);
+        CHECK(tiny.exit_code == 2);
+        CHECK(contains(tiny.output, "'dt_factor' = 1e-310 makes"));
+        CHECK(contains(tiny.output, "allowed: at most 1e+12 steps"));
+    }
     CHECK(fs::is_empty(dir));
     fs::remove_all(dir);
 }

@@ -2,6 +2,7 @@
 // candidates find every sphero-segment contact of the all-pairs search while the rings move, the forces do
 // not depend on the number of OpenMP threads, and the work per vertex stays bounded as the assembly grows
 // (O(N)).
+#include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "core/rng.hpp"
 #include "spd/assembly.hpp"
@@ -152,4 +153,31 @@ TEST_CASE("contact detection costs O(N): candidates per vertex stay bounded as t
     const double small = candidates_per_vertex(16), large = candidates_per_vertex(256);
     MESSAGE("candidates per vertex: 16 rings " << small << ", 256 rings " << large);
     CHECK(large < 1.5 * small);
+}
+
+TEST_CASE("a contact element gone non-finite is diagnosed (exit 3), not a crash, with 1 and 2 threads")
+{
+    // The contacts are evaluated inside an OpenMP region, from which no exception may escape (the process
+    // terminated, exit 134, when a wall jumped to infinity). An element of a touching contact with a NaN
+    // vertex makes point_segment_proximity throw there; the step must end in the non-finite diagnosis.
+    for (const int threads : {1, 2}) {
+        CAPTURE(threads);
+        const int threads_before = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        for (const int particles : {16, 144}) { // 144: above the 2000 vertices of the parallel region
+            CAPTURE(particles);
+            Jostling j = jostling_rings(particles, 0.05);
+            while (j.a.model.active_contacts().empty())
+                j.a.model.step(j.dt, 0.0);
+            const int element_end = j.a.model.active_contacts().front().a;
+            j.a.model.set_vertex(element_end, Vec2(NAN, NAN));
+            try {
+                j.a.model.step(j.dt, 0.0);
+                FAIL("a step with a non-finite vertex went through");
+            } catch (const NumericalError& e) {
+                CHECK(std::string(e.what()).find("non-finite") != std::string::npos);
+            }
+        }
+        omp_set_num_threads(threads_before);
+    }
 }
