@@ -371,7 +371,7 @@ struct PackingModes
 JamOptions packing_jam_options(const ModesOptions& options)
 {
     JamOptions jam;
-    jam.model = options.model ? shape_model_name(*options.model) : "smooth_disk";
+    jam.model = options.model ? jam_model(*options.model) : JamModel::smooth_disk;
     jam.particles = options.particles;
     jam.nodes_small = options.nodes;
     jam.nodes_large = options.nodes + 4;
