@@ -74,8 +74,28 @@ double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
     return area / system.box->prod();
 }
 
+namespace {
+
+// Floppy particles need A0 >= A_min(N) of each size the packing has (no N-gon has a smaller shape parameter,
+// Table 9.1). The one check of it: the scenes bind A0 with its range (>= 1) only, since A_min depends on
+// nodes_small and nodes_large, and library callers reach jam() directly. The small particles come first.
+void require_floppy_A0(const JamOptions& options)
+{
+    if (options.model != JamModel::floppy) return;
+    const int small = options.particles / 2;
+    for (const auto& [n, present] : {std::pair{options.nodes_small, small > 0},
+                                     std::pair{options.nodes_large, options.particles > small}})
+        if (present && options.A0_floppy < minimum_shape_parameter(n))
+            throw InputError("A0 = " + std::to_string(options.A0_floppy) +
+                             " of the floppy particles is below A_min(" + std::to_string(n) +
+                             ") = " + std::to_string(minimum_shape_parameter(n)));
+}
+
+} // namespace
+
 JamResult jam(const JamOptions& options)
 {
+    require_floppy_A0(options);
     const double pi = std::numbers::pi;
     JamResult out;
     DpmSystem& s = out.system;
@@ -124,10 +144,6 @@ JamResult jam(const JamOptions& options)
             k.kb = 0.1;
             k.gamma = 0.1 * k.ka * std::pow(a0_small, 1.5);
             k.kl_surface = options.kl_surface;
-            if (model == ShapeModel::floppy && options.A0_floppy < minimum_shape_parameter(n))
-                throw InputError("A0 = " + std::to_string(options.A0_floppy) +
-                                 " of the floppy particles is below A_min(" + std::to_string(n) +
-                                 ") = " + std::to_string(minimum_shape_parameter(n)));
             const double A0 = model == ShapeModel::floppy ? options.A0_floppy : minimum_shape_parameter(n);
             Eigen::Vector2d c;
             for (int tries = 0;; ++tries) {

@@ -76,6 +76,9 @@ struct JamResult
     FireOptions fire;           // the protocol's FIRE settings, for further steps from its states
 };
 
+// Throws InputError for floppy particles with A0_floppy below A_min(N) of either size (naming A0, checked
+// first: the only check of it), for rough_disk with fire_newton, and when the particles find no room at the
+// start; NumericalError when a relaxation does not converge.
 JamResult jam(const JamOptions& options);
 
 // The compression branch of a jam() run (the states after onset, without those of the decompression): the
