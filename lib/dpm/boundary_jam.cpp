@@ -187,4 +187,16 @@ double largest_gap_over_range(std::vector<double> angles)
     return gap / (angles.back() - angles.front());
 }
 
+ThetaRange theta_range(const std::vector<double>& thetas)
+{
+    ThetaRange range;
+    for (const double theta : thetas) {
+        if (std::isnan(theta)) continue;
+        ++range.packings;
+        range.min = std::min(range.min.value_or(theta), theta);
+        range.max = std::max(range.max.value_or(theta), theta);
+    }
+    return range;
+}
+
 } // namespace softgrain::dpm

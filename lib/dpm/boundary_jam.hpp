@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -56,5 +57,15 @@ int count_distinct_packings(const std::map<int, std::vector<double>>& thetas);
 // (NaN ignored) over their range; NaN below two values. Five values (the floppy boundary's packings) give at
 // least 1/4; a continuous curve tends to 0.
 double largest_gap_over_range(std::vector<double> thetas);
+
+// The packings with a 4-cycle among jammed packings given as theta [deg] (NaN: none) and the range of their
+// theta: touching equal disks bound it to [60, 90] deg (the short diagonal of the rhombus cannot be shorter
+// than d), up to the overlaps U < 2 U_t allows. min and max are nothing without such a packing.
+struct ThetaRange
+{
+    long packings = 0;
+    std::optional<double> min, max;
+};
+ThetaRange theta_range(const std::vector<double>& thetas);
 
 } // namespace softgrain::dpm

@@ -11,8 +11,56 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace softgrain::dpm {
+
+const std::vector<std::pair<std::string, JamModel>>& jam_model_names()
+{
+    static const std::vector<std::pair<std::string, JamModel>> names{
+        {"smooth_disk", JamModel::smooth_disk},
+        {"rough_disk", JamModel::rough_disk},
+        {"shell", JamModel::shell},
+        {"floppy", JamModel::floppy},
+        {"surface_tension", JamModel::surface_tension}};
+    return names;
+}
+
+std::string jam_model_name(JamModel model)
+{
+    for (const auto& [name, value] : jam_model_names())
+        if (value == model) return name;
+    throw std::logic_error("jam_model_name: not a JamModel");
+}
+
+std::optional<ShapeModel> shape_model(JamModel model)
+{
+    switch (model) {
+    case JamModel::smooth_disk:
+    case JamModel::rough_disk:
+        return std::nullopt;
+    case JamModel::shell:
+        return ShapeModel::shell;
+    case JamModel::floppy:
+        return ShapeModel::floppy;
+    case JamModel::surface_tension:
+        return ShapeModel::surface_tension;
+    }
+    throw std::logic_error("shape_model: not a JamModel");
+}
+
+JamModel jam_model(ShapeModel model)
+{
+    switch (model) {
+    case ShapeModel::shell:
+        return JamModel::shell;
+    case ShapeModel::floppy:
+        return JamModel::floppy;
+    case ShapeModel::surface_tension:
+        return JamModel::surface_tension;
+    }
+    throw std::logic_error("jam_model: not a ShapeModel");
+}
 
 double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
 {
@@ -26,15 +74,35 @@ double packing_fraction(const DpmSystem& system, const Eigen::VectorXd& x)
     return area / system.box->prod();
 }
 
+namespace {
+
+// Floppy particles need A0 >= A_min(N) of each size the packing has (no N-gon has a smaller shape parameter,
+// Table 9.1). The one check of it: the scenes bind A0 with its range (>= 1) only, since A_min depends on
+// nodes_small and nodes_large, and library callers reach jam() directly. The small particles come first.
+void require_floppy_A0(const JamOptions& options)
+{
+    if (options.model != JamModel::floppy) return;
+    const int small = options.particles / 2;
+    for (const auto& [n, present] : {std::pair{options.nodes_small, small > 0},
+                                     std::pair{options.nodes_large, options.particles > small}})
+        if (present && options.A0_floppy < minimum_shape_parameter(n))
+            throw InputError("A0 = " + std::to_string(options.A0_floppy) +
+                             " of the floppy particles is below A_min(" + std::to_string(n) +
+                             ") = " + std::to_string(minimum_shape_parameter(n)));
+}
+
+} // namespace
+
 JamResult jam(const JamOptions& options)
 {
+    require_floppy_A0(options);
     const double pi = std::numbers::pi;
     JamResult out;
     DpmSystem& s = out.system;
     s.interaction = InteractionKind::rough;
     s.kc = 1.0;
     Rng rng(options.seed);
-    const bool disks = options.model == "smooth_disk";
+    const bool disks = options.model == JamModel::smooth_disk;
     if (disks) {
         double area = 0;
         for (int m = 0; m < options.particles; ++m)
@@ -50,8 +118,8 @@ JamResult jam(const JamOptions& options)
         // Vertex diameter sigma = 1; small polygons of N_small vertices with R/sigma such that neighbouring
         // vertices overlap as in Fig. 9.12 (edge = 0.85 sigma); large ones scaled by size_ratio in diameter
         // with N_large vertices (decision dpm-jam-polygons).
-        const bool rigid = options.model == "rough_disk";
-        const ShapeModel model = rigid ? ShapeModel::shell : shape_model_from_name(options.model);
+        const bool rigid = options.model == JamModel::rough_disk;
+        const ShapeModel model = rigid ? ShapeModel::shell : *shape_model(options.model);
         const double r_small = 0.85 / (2 * std::sin(pi / options.nodes_small));
         const double a0_small =
             0.5 * options.nodes_small * r_small * r_small * std::sin(2 * pi / options.nodes_small);
@@ -76,10 +144,6 @@ JamResult jam(const JamOptions& options)
             k.kb = 0.1;
             k.gamma = 0.1 * k.ka * std::pow(a0_small, 1.5);
             k.kl_surface = options.kl_surface;
-            if (model == ShapeModel::floppy && options.A0_floppy < minimum_shape_parameter(n))
-                throw InputError("A0 = " + std::to_string(options.A0_floppy) +
-                                 " of the floppy particles is below A_min(" + std::to_string(n) +
-                                 ") = " + std::to_string(minimum_shape_parameter(n)));
             const double A0 = model == ShapeModel::floppy ? options.A0_floppy : minimum_shape_parameter(n);
             Eigen::Vector2d c;
             for (int tries = 0;; ++tries) {
@@ -101,7 +165,7 @@ JamResult jam(const JamOptions& options)
         out.pressure_unit = 1.0 / a0_small; // k_a a0 = (1/a0^2) a0
     }
 
-    const bool rough_disks = options.model == "rough_disk";
+    const bool rough_disks = options.model == JamModel::rough_disk;
     if (rough_disks && options.relaxation == Relaxation::fire_newton)
         throw InputError("relaxation = 'fire_newton' with model = 'rough_disk': rigid polygons relax over "
                          "rigid-body coordinates, with FIRE alone (allowed: fire)");

@@ -16,13 +16,24 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softgrain::dpm {
 
+// The particles of a packing: smooth bidisperse disks (one vertex each), rigid polygons of rough vertices
+// (rough disks, rigid.hpp), or the rough deformable polygons of Table 9.1.
+enum class JamModel { smooth_disk, rough_disk, shell, floppy, surface_tension };
+// Each model with the word a scene's `model` parameter names it by, in the order `describe` lists them.
+const std::vector<std::pair<std::string, JamModel>>& jam_model_names();
+std::string jam_model_name(JamModel model);
+// A deformable model as the ShapeModel of Table 9.1 (nothing for the disks), and back.
+std::optional<ShapeModel> shape_model(JamModel model);
+JamModel jam_model(ShapeModel model);
+
 struct JamOptions
 {
-    std::string model = "smooth_disk"; // smooth_disk | rough_disk | shell | floppy | surface_tension
+    JamModel model = JamModel::smooth_disk;
     int particles = 16;
     int nodes_small = 10, nodes_large = 14;
     double size_ratio = 1.4;
@@ -65,6 +76,9 @@ struct JamResult
     FireOptions fire;           // the protocol's FIRE settings, for further steps from its states
 };
 
+// Throws InputError for floppy particles with A0_floppy below A_min(N) of either size (naming A0, checked
+// first: the only check of it), for rough_disk with fire_newton, and when the particles find no room at the
+// start; NumericalError when a relaxation does not converge.
 JamResult jam(const JamOptions& options);
 
 // The compression branch of a jam() run (the states after onset, without those of the decompression): the

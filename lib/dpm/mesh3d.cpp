@@ -134,6 +134,14 @@ TriangleMesh geodesic_icosahedron(int subdivisions)
     return mesh;
 }
 
+TriangleMesh vertex_down(TriangleMesh mesh)
+{
+    mesh.vertices = Eigen::Quaterniond::FromTwoVectors(mesh.vertices.col(0), -Eigen::Vector3d::UnitZ())
+                        .toRotationMatrix() *
+                    mesh.vertices;
+    return mesh;
+}
+
 TriangleMesh slab_mesh(int n, double spacing, double thickness)
 {
     if (n < 2) throw InputError("slab grid n = " + std::to_string(n) + ": allowed n >= 2");

@@ -50,6 +50,10 @@ TriangleMesh geodesic_icosahedron(int subdivisions);
 // squares between the top and bottom rims. Not on the unit sphere. n >= 2.
 TriangleMesh slab_mesh(int n, double spacing, double thickness);
 
+// `mesh` rotated about its centre so that vertex 0 points down (-z): a probe or slider whose lowest point
+// is that vertex, pressed on or slid over a slab.
+TriangleMesh vertex_down(TriangleMesh mesh);
+
 // "tetrahedron" | "octahedron" | "icosahedron" | "geodesic42" | "geodesic162" | "geodesic642" |
 // "geodesic2562" (the mesh choice of dpm.shape3d); throws InputError otherwise.
 TriangleMesh mesh_from_name(const std::string& name);

@@ -133,11 +133,16 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
     return largest_force(x);
 }
 
+EnergyWithDerivatives system_energy(const DpmSystem& system)
+{
+    return [&system](const Eigen::VectorXd& y, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian) {
+        return total_energy(system, y, gradient, hessian);
+    };
+}
+
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps)
 {
-    return polish_newton([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                                   Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
-                         x, force_tolerance, max_steps);
+    return polish_newton(system_energy(system), x, force_tolerance, max_steps);
 }
 
 double polish_for_modes(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit)
@@ -188,9 +193,7 @@ double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::Vec
 double energy_change_along(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
                            double amplitude)
 {
-    return energy_change_along([&system](const Eigen::VectorXd& y, Eigen::VectorXd* g,
-                                         Eigen::MatrixXd* m) { return total_energy(system, y, g, m); },
-                               x, mode, amplitude);
+    return energy_change_along(system_energy(system), x, mode, amplitude);
 }
 
 double local_exponent(double du1, double du2, double dr1, double dr2, double floor)
@@ -340,12 +343,6 @@ ModeParts decompose_mode(const DpmSystem& system, const Eigen::VectorXd& x, cons
 ModeParts decompose_mode(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
 {
     return decompose_mode_of<3>(system.particles, x, mode);
-}
-
-bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
-                     double lambda, double dr, double factor)
-{
-    return quartic_energy_change(energy_change_along(system, x, mode, dr), lambda, dr, factor);
 }
 
 } // namespace softgrain::dpm

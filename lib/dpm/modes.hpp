@@ -109,14 +109,12 @@ std::vector<ModeParts> nontrivial_zero_mode_parts(const DpmSystem3d& system, con
 
 // Quartic mode (sec. 9.4.3, Fig. 9.14c): along the unit eigenvector e with eigenvalue lambda [E/L^2],
 // Delta U(dr) = U(x + dr e) - U(x) exceeds the harmonic lambda dr^2 / 2 by more than `factor` (decision
-// dpm-quartic-criterion). Quadratic modes stay at the harmonic value until the contacts change.
-// The same criterion on a measured Delta U(dr) (any dimension): Delta U > factor lambda dr^2 / 2.
+// dpm-quartic-criterion). Quadratic modes stay at the harmonic value until the contacts change. On a measured
+// Delta U(dr) (any dimension); mode_energy.hpp applies it to every mode of a spectrum.
 inline bool quartic_energy_change(double delta_u, double lambda, double dr, double factor)
 {
     return delta_u > factor * 0.5 * lambda * dr * dr;
 }
-bool is_quartic_mode(const DpmSystem& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode,
-                     double lambda, double dr, double factor);
 
 // FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
 FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);
@@ -124,6 +122,8 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
 // energy(x, gradient, hessian): the value, adding the gradient and the Hessian when they are not null.
 using EnergyWithDerivatives =
     std::function<double(const Eigen::VectorXd&, Eigen::VectorXd*, Eigen::MatrixXd*)>;
+// The total energy of a 2D system (system.hpp total_energy) as one; `system` must outlive it.
+EnergyWithDerivatives system_energy(const DpmSystem& system);
 
 // The pseudo-inverse of M in Newton's step (and in the linear-response shear modulus,
 // linear_shear_modulus.hpp) leaves out the eigenvalues below this fraction of the largest |lambda|.

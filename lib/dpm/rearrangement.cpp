@@ -48,8 +48,8 @@ NetworkChange compare_networks(const ContactNetwork& before, const ContactNetwor
 RearrangementResult find_rearrangement(const RearrangementOptions& options,
                                        const RearrangementObserver& observe)
 {
-    if (options.jam.model != "smooth_disk")
-        throw InputError("model = " + options.jam.model +
+    if (options.jam.model != JamModel::smooth_disk)
+        throw InputError("model = " + jam_model_name(options.jam.model) +
                          ": the rearrangement search is for smooth_disk packings");
     JamOptions onset_only = options.jam;
     onset_only.pressures = 0; // stop at the onset P_t

@@ -201,7 +201,7 @@ TEST_CASE(
     "Xi = d^2U/dx dgamma and d^2U/dgamma^2 against central differences in gamma at fixed x, on a jammed "
     "packing [DPM sec. 9.4.3]")
 {
-    const JamResult r = polished_packing2d("surface_tension", 16, 1);
+    const JamResult r = polished_packing2d(JamModel::surface_tension, 16, 1);
     const DpmSystem& s = r.system;
     Eigen::SparseMatrix<double> h;
     const StrainDerivatives strain = strain_derivatives(s, r.x, h);
@@ -259,8 +259,8 @@ TEST_CASE(
 TEST_CASE("linear-response G of jammed 2D packings against the finite-strain G of Lees-Edwards steps and "
           "against a dense pseudo-inverse [DPM sec. 9.4.3]")
 {
-    for (const std::string model : {"surface_tension", "shell"}) {
-        CAPTURE(model);
+    for (const JamModel model : {JamModel::surface_tension, JamModel::shell}) {
+        CAPTURE(jam_model_name(model));
         const JamResult r = polished_packing2d(model, 16, 2);
         const DpmSystem& s = r.system;
         PackingUnderTest p;

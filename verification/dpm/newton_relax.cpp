@@ -21,7 +21,7 @@ namespace {
 JamResult small_packing(double pressure = 1e-5)
 {
     JamOptions o;
-    o.model = "shell";
+    o.model = JamModel::shell;
     o.particles = 6;
     o.nodes_small = 6;
     o.nodes_large = 8;
@@ -210,7 +210,7 @@ TEST_CASE("Newton finisher: non-finite coordinates or energies end in NumericalE
 TEST_CASE("relaxation = fire_newton with rigid rough disks is refused with InputError [issue 19]")
 {
     JamOptions o;
-    o.model = "rough_disk";
+    o.model = JamModel::rough_disk;
     o.relaxation = Relaxation::fire_newton;
     CHECK_THROWS_AS(jam(o), InputError);
 }

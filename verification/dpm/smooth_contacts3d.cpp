@@ -333,10 +333,7 @@ TEST_CASE(
     DpmSystem3d s;
     s.kc = kc;
     s.meshes.push_back(slab_mesh(9, 1.0, 1.0));
-    TriangleMesh ico = icosahedron_mesh();
-    ico.vertices = Eigen::Quaterniond::FromTwoVectors(ico.vertices.col(0), -Eigen::Vector3d::UnitZ())
-                       .toRotationMatrix() *
-                   ico.vertices;
+    const TriangleMesh ico = vertex_down(icosahedron_mesh()); // as dpm.slide3d's slider
     s.meshes.push_back(ico);
     Eigen::VectorXd x;
     s.add_particle(0, s.meshes[0].vertices, sigma, ShapeParameters3d{}, x);

@@ -120,7 +120,7 @@ TEST_CASE("sparse dynamical matrix equals the dense one: 2D and 3D, rough and sm
 {
     SUBCASE("2D surface-tension packing, N = 16")
     {
-        JamResult r = polished_packing2d("surface_tension", 16, 2);
+        JamResult r = polished_packing2d(JamModel::surface_tension, 16, 2);
         check_same_matrix(dynamical_matrix(r.system, r.x), sparse_dynamical_matrix(r.system, r.x));
         // Smooth contacts (eqs. 9.5-9.9) at the same overlapping configuration.
         r.system.interaction = InteractionKind::smooth;
@@ -147,7 +147,7 @@ TEST_CASE("lowest modes by shift-and-invert Lanczos equal the dense spectrum's [
     {
         for (const int particles : {16, 32}) {
             CAPTURE(particles);
-            const JamResult r = polished_packing2d("surface_tension", particles, 2);
+            const JamResult r = polished_packing2d(JamModel::surface_tension, particles, 2);
             check_lowest_modes(dynamical_matrix(r.system, r.x), sparse_dynamical_matrix(r.system, r.x), 60,
                                r.pressure_unit, 1e-13);
         }

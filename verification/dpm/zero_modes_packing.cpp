@@ -31,7 +31,7 @@ TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rat
         CAPTURE(c.particles);
         CAPTURE(c.seed);
         JamOptions o;
-        o.model = "surface_tension";
+        o.model = JamModel::surface_tension;
         o.particles = c.particles;
         o.nodes_small = 6;
         o.nodes_large = 10;
@@ -88,7 +88,7 @@ TEST_CASE("rattlers held by a contact of vanishing force keep 3 rigid motions le
     // such a touching rattler (seed 11 at 6cc1e52, where two rattlers touched each other through one vertex
     // pair: 7 zero modes).
     JamOptions o;
-    o.model = "shell";
+    o.model = JamModel::shell;
     o.particles = 8;
     o.nodes_small = 6;
     o.nodes_large = 10;

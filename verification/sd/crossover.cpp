@@ -1,8 +1,9 @@
 // SD Fig. 3b: the Poiseuille-Hertz crossover kappa ~ (h/R)^(3/2), and the Poiseuille window that shrinks and
-// vanishes as kappa grows.
+// vanishes as kappa grows; and both as sd.phase_diagram reduces them (sd/phase_diagram.hpp).
 #include "core/fits.hpp"
 #include "sd/approach.hpp"
 #include "sd/approach_analysis.hpp"
+#include "sd/phase_diagram.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
@@ -74,4 +75,31 @@ TEST_CASE("the Poiseuille window (|lambda2 - 1| <~ 0.1) shrinks as kappa grows a
         if (kappa <= 1e-5) CHECK(decades > 0.5);
         previous = decades;
     }
+}
+
+TEST_CASE(
+    "phase diagram over the paper's kappa range: crossovers on the delta = h line, slope 3/2, Poiseuille "
+    "window nonincreasing and gone above kappa = 1.2e-4 [SD Fig. 3b]")
+{
+    PhaseDiagramSetup setup; // the paper's range: 12 kappas from 1e-6 to 0.3
+    setup.pair = {material, paper_contact_laws(material), constant_loading(1e-6), 100.0, 1e-7};
+    int reports = 0;
+    const PhaseDiagram diagram = phase_diagram(setup, [&reports](double) { ++reports; });
+    CHECK(reports == 12);
+    REQUIRE(diagram.points.size() == 12);
+    CHECK(diagram.points.front().kappa == 1e-6);
+    CHECK_CLOSE(diagram.points.back().kappa, 0.3, (Tolerance{4 * softgrain::verification::round_off, 0.0}));
+    // As the first test: 1.5e-3 from the interpolation of the crossover; the slope over h_crossover <= 1e-2 R,
+    // where h-bar = h (1 - h/R) bends it by at most h/(2R) = 5e-3, plus 1e-3 of interpolation.
+    CHECK(diagram.crossover_relative_error_max <= 1.5e-3);
+    REQUIRE(diagram.crossover_line.has_value());
+    CHECK(diagram.crossover_points >= 4);
+    CHECK_CLOSE(diagram.crossover_line->slope, 1.5, (Tolerance{0.0, 6e-3}));
+    // The Poiseuille window, as the second test: never widening, gone above kappa = 1.2e-4 (theory).
+    CHECK(diagram.poiseuille_window_nonincreasing);
+    CHECK(diagram.points.front().poiseuille_decades() > 0.5);
+    REQUIRE(diagram.kappa_poiseuille_last.has_value());
+    REQUIRE(diagram.kappa_poiseuille_vanishes.has_value());
+    CHECK(*diagram.kappa_poiseuille_last < 1.2e-4);
+    CHECK(*diagram.kappa_poiseuille_vanishes > *diagram.kappa_poiseuille_last);
 }

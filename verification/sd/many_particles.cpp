@@ -14,32 +14,19 @@ using softgrain::verification::Tolerance;
 
 namespace {
 const Material material;
-
-ManyParticleSystem line_system(int n, double F)
-{
-    ManyParticleSystem s{material, paper_contact_laws(material), 1, {}, {}};
-    for (int i = 0; i + 1 < n; ++i)
-        s.bonds.push_back({i, i + 1});
-    s.external = [n, F](double, std::vector<double>& force, std::vector<double>& rate) {
-        std::fill(force.begin(), force.end(), 0.0);
-        std::fill(rate.begin(), rate.end(), 0.0);
-        force[0] = F;
-        force[n - 1] = -F;
-    };
-    return s;
-}
 } // namespace
 
 TEST_CASE("two particles: relative velocity and gap rate equal the pair's X-dot (eq. 9) and h-dot (eq. 7) "
           "[SD note 20]")
 {
     const double F = 1e-3;
-    const ManyParticleSystem s = line_system(2, F);
     for (double h : {10.0, 0.1, 1e-4}) {
         CAPTURE(h);
-        const double delta = balanced_deflection(s.laws, h, F);
-        const double X = 2 + h - 2 * delta;
-        const ManyParticleRates many = many_particle_rates(s, 0.0, {0.0, X}, {h});
+        // Two particles at rest at gap h under F: the line of sd.many, positions 0 and X = 2R + h - 2 delta.
+        const BalancedStart line = compressed_line(material, 2, F, h);
+        const ManyParticleSystem& s = line.system;
+        const double X = line.distance;
+        const ManyParticleRates many = many_particle_rates(s, 0.0, line.positions, {h});
         const PairRates pair = soft_dynamics_rates(s.laws, 1.0, X, h, F, 0.0);
         // Same formulas, one linear solve: agreement to round-off of the solve (condition ~1).
         CHECK_CLOSE(many.velocity[1] - many.velocity[0], pair.X_dot, (Tolerance{1e3 * round_off, 0.0}));
@@ -53,11 +40,10 @@ TEST_CASE("a line of 5 compressed at its ends: every gap follows the pair under 
           "velocity 0 [note 20]")
 {
     const double F = 1e-3, h0 = 1.0;
-    const ManyParticleSystem s = line_system(5, F);
-    const double delta0 = balanced_deflection(s.laws, h0, F);
-    std::vector<double> x;
-    for (int i = 0; i < 5; ++i)
-        x.push_back(i * (2 + h0 - 2 * delta0));
+    const BalancedStart line = compressed_line(material, 5, F, h0);
+    const ManyParticleSystem& s = line.system;
+    const double delta0 = line.deflection;
+    const std::vector<double>& x = line.positions;
     const ApproachProblem pair{material, s.laws, constant_loading(F), h0, 1e-3};
     const double t_end = approach_time_reference(pair, h0, 1e-3);
     long steps = 0;
@@ -91,7 +77,9 @@ TEST_CASE("a triangle pushed to its centre stays symmetric, bonds carry F/sqrt3,
     const double rho = (2 + h0 - 2 * delta0) / std::sqrt(3.0);
     std::vector<double> x;
     for (int i = 0; i < 3; ++i) {
-        const double angle = 0.3 + 2 * std::acos(-1.0) * i / 3; // a generic orientation
+        // A generic orientation, not pushed_triangle's (particle 0 on the y axis): nothing may depend on the
+        // axes.
+        const double angle = 0.3 + 2 * std::acos(-1.0) * i / 3;
         x.push_back(rho * std::cos(angle));
         x.push_back(rho * std::sin(angle));
     }

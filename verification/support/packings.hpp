@@ -36,7 +36,7 @@ inline dpm::DpmSystem3d fcc_crystal(double a, int n, Eigen::VectorXd& x)
 
 // `particles` deformable particles of 6 and 10 vertices of `model`, jammed by the dpm.jam protocol at
 // P_t = 1e-5 k_a a0 and Newton-polished to round-off forces (polish_for_modes).
-inline dpm::JamResult polished_packing2d(const std::string& model, int particles, std::uint64_t seed)
+inline dpm::JamResult polished_packing2d(dpm::JamModel model, int particles, std::uint64_t seed)
 {
     dpm::JamOptions o;
     o.model = model;

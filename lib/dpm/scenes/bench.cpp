@@ -67,11 +67,12 @@ std::string mesh_for_nodes(const JamOptions& options)
 // The 3D protocol's options for dpm.jam's (see the header comment).
 Jam3dOptions jam_options_3d(const JamOptions& options)
 {
-    if (options.model == "smooth_disk" || options.model == "rough_disk")
-        throw InputError("model = '" + options.model +
+    const std::optional<ShapeModel> model = shape_model(options.model);
+    if (!model)
+        throw InputError("model = '" + jam_model_name(options.model) +
                          "' with dimension = 3: allowed shell | floppy | surface_tension");
     Jam3dOptions options3d;
-    options3d.model = shape_model_from_name(options.model);
+    options3d.model = *model;
     options3d.particles = options.particles;
     options3d.mesh = mesh_for_nodes(options);
     options3d.size_ratio = options.size_ratio;

@@ -175,16 +175,10 @@ void run_boundary_jam(const BoundaryJamSceneOptions& options, RunContext& contex
     summary["distinct_packings"] = count_distinct_packings(thetas);
     summary["trials"] = trials.size();
     summary["largest_theta_gap_over_range"] = largest_gap_over_range(all_thetas);
-    const auto finite =
-        std::count_if(all_thetas.begin(), all_thetas.end(), [](double t) { return !std::isnan(t); });
-    summary["packings_with_4_cycle"] = finite;
-    // The range of theta over every packing with a 4-cycle: touching equal disks bound it to [60, 90] deg
-    // (the short diagonal of the rhombus cannot be shorter than d), up to the overlaps U < 2 U_t allows.
-    double theta_min = std::numeric_limits<double>::infinity(), theta_max = -theta_min;
-    for (double t : all_thetas)
-        if (!std::isnan(t)) theta_min = std::min(theta_min, t), theta_max = std::max(theta_max, t);
-    summary["theta_min"] = finite > 0 ? nlohmann::json(theta_min) : nlohmann::json(nullptr);
-    summary["theta_max"] = finite > 0 ? nlohmann::json(theta_max) : nlohmann::json(nullptr);
+    const ThetaRange range = theta_range(all_thetas);
+    summary["packings_with_4_cycle"] = range.packings;
+    summary["theta_min"] = value_or_null(range.min);
+    summary["theta_max"] = value_or_null(range.max);
 }
 
 } // namespace

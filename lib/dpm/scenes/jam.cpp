@@ -79,7 +79,8 @@ void run_jam(const JamOptions& options, RunContext& context)
 // dpm.slump.
 BidispersePacking bidisperse_packing(const JamOptions& options)
 {
-    return {options.particles, options.nodes_small, options.nodes_large, options.model == "smooth_disk"};
+    return {options.particles, options.nodes_small, options.nodes_large,
+            options.model == JamModel::smooth_disk};
 }
 
 double bidisperse_vertices(const BidispersePacking& packing)

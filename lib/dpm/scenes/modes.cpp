@@ -6,6 +6,7 @@
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/jam.hpp"
+#include "dpm/mode_energy.hpp"
 #include "dpm/preferred_shape.hpp"
 #include "dpm/scenes/scenes.hpp"
 #include "dpm/single_particle.hpp"
@@ -111,14 +112,14 @@ MemoryEstimate modes_memory(const ModesOptions& options)
     return dense_matrix_memory(2 * vertices, 2, particles > 1 ? "2 x particles x (nodes + 2)" : "2 x nodes");
 }
 
-// Fig. 9.5(c, d): every non-zero mode of a packing of deformable particles split into rigid translations,
-// rotations and deformations (decompose_mode), classified quartic or quadratic by Delta U (is_quartic_mode);
-// the lowest-frequency quartic mode and the highest-frequency mode are written as fields over the packing.
-// The positive modes start at index first_positive (SpectrumCounts).
-void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double unit, int first_positive,
+// Fig. 9.5(c, d): every non-zero mode of a packing of deformable particles (every mode of `modes`, from index
+// first_positive, SpectrumCounts) split into rigid translations, rotations and deformations (decompose_mode),
+// classified quartic or quadratic by Delta U (`energies`, mode_energies); the lowest-frequency quartic mode
+// and the highest-frequency mode are written as fields over the packing.
+void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
+                      const ModeSpectrum& modes, const ModeEnergies& energies, int first_positive,
                       RunContext& context)
 {
-    const ModeSpectrum modes = vibrational_modes(system, x);
     const double mixing = 0.05; // each part carries >= 5 % of |u|^2 (decision dpm-quartic-criterion)
     auto& table = context.table("mode_parts.dat",
                                 {{"k", "1", "mode index, ascending eigenvalue"},
@@ -133,7 +134,7 @@ void write_mode_parts(const DpmSystem& system, const Eigen::VectorXd& x, double 
     for (Eigen::Index m = first_positive; m < modes.eigenvalues.size(); ++m) {
         const Eigen::VectorXd u = modes.eigenvectors.col(m);
         const ModeParts parts = decompose_mode(system, x, u);
-        const bool quartic = is_quartic_mode(system, x, u, modes.eigenvalues(m), 0.1, 3.0);
+        const bool quartic = energies.modes[static_cast<std::size_t>(m)].quartic;
         const bool mixes =
             parts.translation >= mixing && parts.rotation >= mixing && parts.deformation >= mixing;
         (quartic ? quartic_count : quadratic_count) += 1;
@@ -250,6 +251,7 @@ struct Spectrum
     double threshold = 0;   // zero_threshold_used [unit]
     SpectrumCounts counts;
     double seconds = 0, seconds_min = 0; // of the first computation, and the least of its repeats
+    ModeEnergies energies;               // Delta U along each mode (Fig. 9.14c), energies k_a a0^2
 };
 
 Spectrum measure_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double unit,
@@ -282,6 +284,9 @@ Spectrum measure_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, dou
                          ": all of them are zero or negative modes " + "(threshold " +
                          std::to_string(spectrum.threshold) +
                          "), so the zero-mode count is incomplete; allowed: a larger lowest_modes");
+    ModeEnergyOptions along;
+    along.first_positive = spectrum.counts.first_positive();
+    spectrum.energies = mode_energies(system_energy(system), x, modes, along);
     return spectrum;
 }
 
@@ -308,19 +313,12 @@ void write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double un
                                           {"zero_mode", "1", "1 if lambda~_k < zero_threshold_used"},
                                           {"dr", "sqrt(a0)", "amplitude Delta r along the unit eigenvector"},
                                           {"dU", "k_a a0^2", "Delta U = U(x + dr e_k) - U(x)"}});
-    const double u0 = total_energy(system, x, nullptr, nullptr);
-    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(u0));
-    std::vector<double> zero_exponents, quadratic_exponents;
+    const ModeEnergies& energies = spectrum.energies;
     for (Eigen::Index m = 0; m < lambda.size(); ++m) {
-        const Eigen::VectorXd e = modes.eigenvectors.col(m);
-        for (int step = 0; step <= 24; ++step) {
-            const double dr = std::pow(10.0, -3.0 + step / 8.0);
-            along.row({double(m + 1), lambda(m), m < positive ? 1.0 : 0.0, dr,
-                       energy_change_along(system, x, e, dr)});
-        }
-        const double exponent = local_exponent(energy_change_along(system, x, e, 1e-3),
-                                               energy_change_along(system, x, e, 2e-3), 1e-3, 2e-3, floor);
-        if (m >= counts.negative) (m < positive ? zero_exponents : quadratic_exponents).push_back(exponent);
+        const ModeEnergy& mode = energies.modes[static_cast<std::size_t>(m)];
+        for (std::size_t step = 0; step < energies.amplitudes.size(); ++step)
+            along.row({double(m + 1), lambda(m), m < positive ? 1.0 : 0.0, energies.amplitudes[step],
+                       mode.delta_u[step]});
     }
 
     auto& summary = context.summary();
@@ -350,9 +348,12 @@ void write_spectrum(const DpmSystem& system, const Eigen::VectorXd& x, double un
         counts.zero > 0 ? nlohmann::json(lambda(positive - 1)) : nlohmann::json(nullptr);
     summary["lambda_max"] =
         lowest > 0 ? spectrum.computed.largest_magnitude / unit : lambda(lambda.size() - 1);
-    summary["energy"] = u0;
-    summary["zero_mode_exponent"] = value_or_null(median_exponent(zero_exponents));
-    if (lowest == 0) summary["quadratic_mode_exponent"] = value_or_null(median_exponent(quadratic_exponents));
+    summary["energy"] = energies.energy;
+    const auto exponent_over = [&](int first, Eigen::Index last) {
+        return value_or_null(median_exponent(energies.modes, first, last, &ModeEnergy::exponent_small));
+    };
+    summary["zero_mode_exponent"] = exponent_over(counts.negative, positive);
+    if (lowest == 0) summary["quadratic_mode_exponent"] = exponent_over(positive, lambda.size());
     summary["modes_computed"] = lambda.size();
 }
 
@@ -370,7 +371,7 @@ struct PackingModes
 JamOptions packing_jam_options(const ModesOptions& options)
 {
     JamOptions jam;
-    jam.model = options.model ? shape_model_name(*options.model) : "smooth_disk";
+    jam.model = options.model ? jam_model(*options.model) : JamModel::smooth_disk;
     jam.particles = options.particles;
     jam.nodes_small = options.nodes;
     jam.nodes_large = options.nodes + 4;
@@ -402,7 +403,8 @@ void report_packing_modes(const ModesOptions& options, const PackingModes& resul
                    context);
     const SpectrumCounts& counts = result.spectrum.counts;
     if (options.model && options.lowest_modes == 0) // every mode, and the highest one (Fig. 9.5d)
-        write_mode_parts(packing.system, packing.x, packing.pressure_unit, counts.first_positive(), context);
+        write_mode_parts(packing.system, packing.x, packing.pressure_unit, result.spectrum.computed.modes,
+                         result.spectrum.energies, counts.first_positive(), context);
     // Rattlers: particles whose contact forces cannot be told from zero at the polished equilibrium (also
     // those held by one contact of vanishing force, which keep 2 of their 3 rigid motions as zero modes); the
     // zero modes that move only rattlers are not the packing's own (decision dpm-zero-mode-count).

@@ -5,6 +5,7 @@
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
 #include "dpm/jam3d.hpp"
+#include "dpm/mode_energy.hpp"
 #include "dpm/modes.hpp"
 #include "dpm/scenes/scenes.hpp"
 #include "dpm/single_particle3d.hpp"
@@ -195,14 +196,12 @@ SpectrumCounts write_spectrum(const Eigen::VectorXd& lambda, Eigen::Index degree
 }
 
 // Fig. 9.15(c): Delta U = U(x + dr e_k) - U(x) along every unit eigenvector e_k of the packing at
-// dr = 10^(-3 + s/8) v0^(1/3), s = 0 ... 28 (1e-3 to 3.2), in the table mode_energy.dat; summary: the median
-// local exponent d ln dU/d ln dr at dr = 1e-3 over the non-zero modes (quadratic: 2) and between
-// dr = 0.1 and 0.2 over the soft modes, lambda~ below `soft` (quartic at large dr: 4). The soft modes cross
-// from quadratic to quartic at dr ~ sqrt(lambda~) <~ 1e-2 (U = lambda dr^2/2 + c dr^4 with c ~ 1); the
-// window lies a decade beyond (decision dpm-3d-quartic-window).
-void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult& packing,
-                         const Eigen::VectorXd& lambda, const Eigen::MatrixXd& modes, int first_positive,
-                         double soft, const std::vector<bool>& quartic, RunContext& context)
+// dr = 10^(-3 + s/8) v0^(1/3), s = 0 ... 28 (1e-3 to 3.2), in the table mode_energy.dat, with the quartic
+// flag of each mode; summary: the median local exponent d ln dU/d ln dr at dr = 1e-3 over the non-zero modes
+// (quadratic: 2) and between dr = 0.1 and 0.2 over the soft modes (quartic at large dr: 4), as measured by
+// mode_energies (packing_modes3d).
+void write_mode_energy3d(const Eigen::VectorXd& lambda, const ModeEnergies& energies, int first_positive,
+                         int soft_end, RunContext& context)
 {
     auto& table = context.table(
         "mode_energy.dat", {{"k", "1", "mode index"},
@@ -211,27 +210,17 @@ void write_mode_energy3d(const EnergyWithDerivatives& energy, const Jam3dResult&
                             {"quartic", "1", "1 if Delta U(0.1 sigma) > 3 lambda dr^2/2 (quartic_modes)"},
                             {"dr", "v0^(1/3)", "amplitude Delta r along the unit eigenvector"},
                             {"dU", "k_v v0^2", "Delta U = U(x + dr e_k) - U(x)"}});
-    const double u0 = energy(packing.x, nullptr, nullptr) / packing.energy_unit;
-    const double floor = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(u0));
-    const auto change = [&](Eigen::Index k, double dr) {
-        return energy_change_along(energy, packing.x, modes.col(k), dr * packing.length_unit) /
-               packing.energy_unit;
-    };
-    std::vector<double> small_exponents, large_exponents;
     for (Eigen::Index k = 0; k < lambda.size(); ++k) {
-        for (int s = 0; s <= 28; ++s) {
-            const double dr = std::pow(10.0, -3.0 + s / 8.0);
-            table.row({double(k + 1), lambda(k), k < first_positive ? 1.0 : 0.0, quartic[k] ? 1.0 : 0.0, dr,
-                       change(k, dr)});
-        }
-        if (k < first_positive) continue;
-        small_exponents.push_back(local_exponent(change(k, 1e-3), change(k, 2e-3), 1e-3, 2e-3, floor));
-        if (lambda(k) < soft)
-            large_exponents.push_back(local_exponent(change(k, 0.1), change(k, 0.2), 0.1, 0.2, floor));
+        const ModeEnergy& mode = energies.modes[static_cast<std::size_t>(k)];
+        for (std::size_t s = 0; s < energies.amplitudes.size(); ++s)
+            table.row({double(k + 1), lambda(k), k < first_positive ? 1.0 : 0.0, mode.quartic ? 1.0 : 0.0,
+                       energies.amplitudes[s], mode.delta_u[s]});
     }
     auto& summary = context.summary();
-    summary["quadratic_mode_exponent"] = value_or_null(median_exponent(small_exponents));
-    summary["soft_mode_exponent_large"] = value_or_null(median_exponent(large_exponents));
+    summary["quadratic_mode_exponent"] = value_or_null(
+        median_exponent(energies.modes, first_positive, energies.modes.size(), &ModeEnergy::exponent_small));
+    summary["soft_mode_exponent_large"] =
+        value_or_null(median_exponent(energies.modes, first_positive, soft_end, &ModeEnergy::exponent_large));
 }
 
 // The softest non-zero mode e of a packing (Fig. 9.15d-f, decision dpm-3d-surface-tension-slope): its shares
@@ -312,17 +301,19 @@ ComputedModes3d compute_modes3d(const DpmSystem3d& system, const Eigen::VectorXd
 // Fig. 9.15(b): a jammed packing at P_t, Newton-polished to round-off forces first (a residual force f shifts
 // the zero modes by ~f R), and its modes. The protocol moves a packing off a saddle and compresses it again
 // (jam3d.hpp); one left after `saddle_escapes` moves shows as negative modes (decision dpm-packing-minimum).
-// Quartic modes (Fig. 9.15c, decision dpm-quartic-criterion as in 2D): Delta U along the unit mode at
-// Delta r = 0.1 sigma above 3 times the harmonic lambda Delta r^2/2.
+// Delta U along each mode (Fig. 9.15c; mode_energies): soft modes are those below soft_threshold, quartic
+// ones (decision dpm-quartic-criterion as in 2D) have Delta U at Delta r = 0.1 sigma above 3 times the
+// harmonic lambda Delta r^2/2.
 struct PackingModes3d
 {
     Jam3dResult packing;
     double force_max = 0; // after the polish [k_c sigma]
     ComputedModes3d computed;
     double spectrum_seconds = 0;
-    Eigen::VectorXd lambda;    // [k_v v0^(4/3)]
-    SpectrumCounts counts;     // of lambda
-    std::vector<bool> quartic; // per mode
+    Eigen::VectorXd lambda; // [k_v v0^(4/3)]
+    SpectrumCounts counts;  // of lambda
+    int soft_end = 0;       // the modes below soft_threshold, a prefix of the ascending spectrum
+    ModeEnergies energies;  // lengths v0^(1/3), energies k_v v0^2
 };
 
 EnergyWithDerivatives packing_energy(const Jam3dResult& packing)
@@ -348,12 +339,14 @@ PackingModes3d packing_modes3d(const Modes3dOptions& options)
         count_modes(result.lambda, spectrum_threshold(result.lambda, packing.x.size(),
                                                       result.computed.largest / packing.eigenvalue_unit,
                                                       options.jam.zero_threshold));
-    const auto& modes = result.computed.modes.eigenvectors;
-    const EnergyWithDerivatives energy = packing_energy(packing);
-    result.quartic.assign(static_cast<std::size_t>(result.lambda.size()), false);
-    for (Eigen::Index k = result.counts.first_positive(); k < result.lambda.size(); ++k)
-        result.quartic[k] = quartic_energy_change(energy_change_along(energy, packing.x, modes.col(k), 0.1),
-                                                  result.computed.modes.eigenvalues(k), 0.1, 3.0);
+    result.soft_end = static_cast<int>((result.lambda.array() < options.soft_threshold).count());
+    ModeEnergyOptions along;
+    along.amplitudes = 29;
+    along.length_unit = packing.length_unit;
+    along.energy_unit = packing.energy_unit;
+    along.first_positive = result.counts.first_positive();
+    along.soft_end = result.soft_end;
+    result.energies = mode_energies(packing_energy(packing), packing.x, result.computed.modes, along);
     return result;
 }
 
@@ -388,9 +381,7 @@ void report_packing_modes3d(const Modes3dOptions& options, const PackingModes3d&
                        options.jam.zero_threshold, context);
     const int positive = counts.first_positive();
     const auto& modes = result.computed.modes.eigenvectors;
-    const double soft = options.soft_threshold;
-    write_mode_energy3d(packing_energy(packing), packing, lambda, modes, positive, soft, result.quartic,
-                        context);
+    write_mode_energy3d(lambda, result.energies, positive, result.soft_end, context);
     write_softest_mode3d(packing.system, packing.x, result.computed.modes.eigenvalues, modes, positive,
                          context);
     // Rattlers: particles without a vertex contact (rough: vertex pairs; smooth: vertex-surface pairs); each
@@ -409,9 +400,10 @@ void report_packing_modes3d(const Modes3dOptions& options, const PackingModes3d&
     summary["spectrum_seconds"] = result.spectrum_seconds; // reported, never asserted
     // Counts over every mode: only with the dense spectrum.
     if (every_mode) {
-        summary["quartic_modes"] = std::count(result.quartic.begin(), result.quartic.end(), true);
-        // zero_threshold_used <= lambda~ < soft (no mode if soft lies below the threshold)
-        summary["soft_modes"] = std::max(0, static_cast<int>((lambda.array() < soft).count()) - positive);
+        summary["quartic_modes"] = std::count_if(result.energies.modes.begin(), result.energies.modes.end(),
+                                                 [](const ModeEnergy& mode) { return mode.quartic; });
+        // zero_threshold_used <= lambda~ < soft_threshold (no mode if it lies below the threshold)
+        summary["soft_modes"] = std::max(0, result.soft_end - positive);
     }
     summary["pressure_reached"] =
         pressure3d(stress_tensor3d(packing.system, packing.x)) / packing.pressure_unit;

@@ -17,7 +17,7 @@ namespace {
 RearrangementOptions rearrangement_defaults()
 {
     RearrangementOptions defaults;
-    defaults.jam.model = "smooth_disk";
+    defaults.jam.model = JamModel::smooth_disk;
     defaults.jam.particles = 64;
     defaults.jam.pressure_onset = 1e-6;
     return defaults;

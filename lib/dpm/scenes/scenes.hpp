@@ -58,10 +58,10 @@ void bind_jam_protocol(OptionBinding<Options>& binding, JamField jam)
         .at_least(3);
     binding.integer(field(&JamOptions::nodes_large), "nodes_large", "1", "vertices of the large particles")
         .at_least(3);
-    binding.word(field(&JamOptions::model), "model",
-                 {"smooth_disk", "rough_disk", "shell", "floppy", "surface_tension"},
-                 "smooth bidisperse disks, rigid rough polygons (rough disks) or rough deformable particles "
-                 "of Table 9.1");
+    binding.choice(
+        field(&JamOptions::model), "model", jam_model_names(),
+        "smooth bidisperse disks, rigid rough polygons (rough disks) or rough deformable particles "
+        "of Table 9.1");
     binding.seed(field(&JamOptions::seed), "seed", "seed of the random initial placement");
     binding
         .real(field(&JamOptions::pressure_onset), "pressure_onset", "k_c or k_a a0",

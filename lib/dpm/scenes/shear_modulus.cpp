@@ -44,7 +44,7 @@ OptionBinding<ShearModulusOptions> shear_modulus_binding()
               "usually far below)")
         .positive();
     binding.check([](const ShearModulusOptions& options) {
-        if (options.jam.model == "rough_disk")
+        if (options.jam.model == JamModel::rough_disk)
             throw InputError(
                 "model = 'rough_disk': dpm.shear_modulus minimises over vertex coordinates; rigid "
                 "polygons are not supported (allowed: smooth_disk | shell | floppy | surface_tension)");

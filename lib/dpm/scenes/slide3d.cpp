@@ -114,11 +114,7 @@ Slide3dResult slide(const Slide3dOptions& options, const SlideFrame& frame)
                                        options.spacing)) +
         5;
     system.meshes.push_back(slab_mesh(n, options.spacing, 2 * sigma));
-    TriangleMesh ball = mesh_from_name(options.mesh);
-    // Vertex 0 down.
-    ball.vertices = Eigen::Quaterniond::FromTwoVectors(ball.vertices.col(0), -Eigen::Vector3d::UnitZ())
-                        .toRotationMatrix() *
-                    ball.vertices;
+    const TriangleMesh ball = vertex_down(mesh_from_name(options.mesh));
     system.meshes.push_back(ball);
     Eigen::VectorXd x;
     system.add_particle(0, system.meshes[0].vertices, sigma, ShapeParameters3d{}, x);

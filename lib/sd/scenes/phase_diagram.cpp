@@ -1,13 +1,14 @@
 // sd.phase_diagram: the regimes crossed by constant-kappa approaches and the Poiseuille-Hertz crossover
-// (Rognon & Gay, Fig. 3b).
-#include "core/fits.hpp"
+// (Rognon & Gay, Fig. 3b): the approaches and their reductions (sd/phase_diagram.hpp), then the table, the
+// paper's crossover lines and the summary.
+#include "sd/phase_diagram.hpp"
 #include "core/output.hpp"
-#include "sd/approach_analysis.hpp"
+#include "sd/scaling.hpp"
 #include "sd/scenes/parameters.hpp"
 #include "sd/scenes/scenes.hpp"
 
-#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace softgrain::sd {
@@ -44,13 +45,24 @@ OptionBinding<PhaseDiagramOptions> phase_diagram_binding()
     return binding;
 }
 
-void run_phase_diagram(const PhaseDiagramOptions& options, RunContext& context)
+// The approaches at the scene's kappas (phase_diagram), with progress on stderr.
+PhaseDiagram run_approaches(const PhaseDiagramOptions& options, RunContext& context)
 {
-    const double kappa_min = options.kappa_min, kappa_max = options.kappa_max;
-    const int count = options.kappa_count;
-    const double threshold = options.integrator.regime_width;
-    const IntegratorSettings settings = adaptive_settings(options.integrator);
+    PhaseDiagramSetup setup;
+    setup.pair = pair_problem(options.kappa_min, options.h0, options.h_min); // each kappa's loading in turn
+    setup.kappa_min = options.kappa_min;
+    setup.kappa_max = options.kappa_max;
+    setup.kappa_count = options.kappa_count;
+    setup.settings = adaptive_settings(options.integrator);
+    setup.regime_width = options.integrator.regime_width;
+    auto progress = context.progress("sd.phase_diagram");
+    PhaseDiagram diagram = phase_diagram(setup, [&progress](double fraction) { progress.update(fraction); });
+    progress.finish();
+    return diagram;
+}
 
+void write_phase_diagram_table(const PhaseDiagram& diagram, RunContext& context)
+{
     auto& table = context.table(
         "phase_diagram.dat",
         {{"kappa", "1", "F_ext/(E R^2), eq. (6)"},
@@ -65,42 +77,20 @@ void run_phase_diagram(const PhaseDiagramOptions& options, RunContext& context)
          {"hertz_h_max", "R", "largest such h"},
          {"h_crossover", "R", "simulated h where delta = h"},
          {"kappa_crossover_exact", "1", "alpha sqrt 2 (h/R) sqrt(h-bar/R + h/R) at h_crossover"}});
-    std::vector<double> log_h, log_kappa, decades;
-    double relative_error_max = 0, kappa_vanishes = NAN, kappa_last_window = NAN;
-    long total_steps = 0;
-    auto progress = context.progress("sd.phase_diagram");
-    for (long long i = 0; i < count; ++i) {
-        const double kappa =
-            kappa_min * std::pow(kappa_max / kappa_min, static_cast<double>(i) / (count - 1));
-        const ApproachProblem problem = pair_problem(kappa, options.h0, options.h_min);
-        const ApproachRun run = integrate_approach(problem, settings);
-        total_steps += run.steps;
-        const ApproachAnalysis analysis = analyse_approach(problem, run.samples, threshold);
-        const std::optional<GapRange> ranges[3] = {
-            regime_range(run.samples, Regime::stokes, 1.0, threshold),
-            regime_range(run.samples, Regime::poiseuille, 1.0, threshold),
-            regime_range(run.samples, Regime::hertz, 1.0, threshold)};
-        const auto low = [&](int regime) { return ranges[regime] ? ranges[regime]->low : NAN; };
-        const auto high = [&](int regime) { return ranges[regime] ? ranges[regime]->high : NAN; };
-        const double window = ranges[1] ? ranges[1]->decades() : 0.0;
-        decades.push_back(window);
-        if (window == 0.0 && std::isnan(kappa_vanishes)) kappa_vanishes = kappa;
-        if (window > 0.0) kappa_last_window = kappa;
-        const double hc = analysis.h_crossover.value_or(NAN);
-        const double kc = analysis.h_crossover ? crossover_kappa_paper(problem.material, hc) : NAN;
-        if (analysis.h_crossover) {
-            relative_error_max = std::max(relative_error_max, std::abs(kc / kappa - 1.0));
-            if (hc <= 1e-2) { // the asymptotic branch kappa ~ (h/R)^(3/2) (h-bar = h within 1%)
-                log_h.push_back(std::log(hc));
-                log_kappa.push_back(std::log(kappa));
-            }
-        }
-        table.row({kappa, run.samples.front().h, run.samples.back().h, low(0), high(0), low(1), high(1),
-                   window, low(2), high(2), hc, kc});
-        progress.update(static_cast<double>(i + 1) / static_cast<double>(count));
-    }
-    progress.finish();
-    context.count_steps(total_steps);
+    const auto low = [](const std::optional<GapRange>& range) { return range ? range->low : NAN; };
+    const auto high = [](const std::optional<GapRange>& range) { return range ? range->high : NAN; };
+    for (const PhaseDiagramPoint& point : diagram.points)
+        table.row({point.kappa, point.h_start, point.h_end, low(point.stokes), high(point.stokes),
+                   low(point.poiseuille), high(point.poiseuille), point.poiseuille_decades(),
+                   low(point.hertz), high(point.hertz), point.h_crossover.value_or(NAN),
+                   point.kappa_crossover_exact});
+}
+
+void run_phase_diagram(const PhaseDiagramOptions& options, RunContext& context)
+{
+    const PhaseDiagram diagram = run_approaches(options, context);
+    context.count_steps(diagram.steps);
+    write_phase_diagram_table(diagram, context);
 
     auto& lines = context.table("crossover_lines.dat",
                                 {{"h", "R", "gap"},
@@ -111,20 +101,20 @@ void run_phase_diagram(const PhaseDiagramOptions& options, RunContext& context)
         lines.row({h, crossover_kappa_paper(material, h), crossover_kappa_asymptotic(material, h)});
 
     auto& summary = context.summary();
-    summary["kappa_runs"] = count;
-    summary["crossover_rel_error_max"] = relative_error_max;
-    summary["crossover_points"] = log_h.size();
-    if (const auto line = fit_line(log_h, log_kappa)) {
+    summary["kappa_runs"] = options.kappa_count;
+    summary["crossover_rel_error_max"] = diagram.crossover_relative_error_max;
+    summary["crossover_points"] = diagram.crossover_points;
+    if (const auto& line = diagram.crossover_line) {
         summary["crossover_slope"] = line->slope;
         summary["crossover_prefactor"] = std::exp(line->intercept);
     } else {
         summary["crossover_slope"] = nullptr;
         summary["crossover_prefactor"] = nullptr;
     }
-    summary["poiseuille_decades_at_kappa_min"] = decades.front();
-    summary["kappa_poiseuille_vanishes"] = finite_or_null(kappa_vanishes);
-    summary["kappa_poiseuille_last"] = finite_or_null(kappa_last_window);
-    summary["poiseuille_window_nonincreasing"] = std::is_sorted(decades.rbegin(), decades.rend());
+    summary["poiseuille_decades_at_kappa_min"] = diagram.points.front().poiseuille_decades();
+    summary["kappa_poiseuille_vanishes"] = value_or_null(diagram.kappa_poiseuille_vanishes);
+    summary["kappa_poiseuille_last"] = value_or_null(diagram.kappa_poiseuille_last);
+    summary["poiseuille_window_nonincreasing"] = diagram.poiseuille_window_nonincreasing;
 }
 
 } // namespace
