@@ -123,14 +123,6 @@ double particle_perimeter(const Eigen::VectorXd& x, int first, int n)
     return polygon_perimeter(x.segment(2 * first, 2 * n).reshaped(2, n));
 }
 
-ShapeModel shape_model_from_name(const std::string& name)
-{
-    if (name == "floppy") return ShapeModel::floppy;
-    if (name == "shell") return ShapeModel::shell;
-    if (name == "surface_tension") return ShapeModel::surface_tension;
-    throw InputError("model = '" + name + "': allowed floppy | shell | surface_tension");
-}
-
 std::string shape_model_name(ShapeModel model)
 {
     switch (model) {

@@ -224,8 +224,7 @@ inline double regular_polygon_radius(int n, double area)
 
 // The three particle types of Table 9.1.
 enum class ShapeModel { floppy, shell, surface_tension };
-ShapeModel shape_model_from_name(const std::string& name); // "floppy" | "shell" | "surface_tension"
-std::string shape_model_name(ShapeModel model);            // its inverse
+std::string shape_model_name(ShapeModel model); // "floppy" | "shell" | "surface_tension"
 
 // Parameters of Table 9.1 for a particle of n vertices, preferred area a0 and preferred shape parameter
 // A0 >= A_min(n): l0 = sqrt(4 pi a0 A0)/n (so that (n l0)^2/(4 pi a0) = A0), theta0 = 2 pi/n.
