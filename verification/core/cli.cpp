@@ -243,6 +243,14 @@ TEST_CASE("a run that cannot take the steps it is asked for is refused (exit 2),
         CHECK(contains(tiny.output, "'dt_factor' = 1e-310 makes"));
         CHECK(contains(tiny.output, "allowed: at most 1e+12 steps"));
     }
+    // dpm.shear_friction's scan x_start..x_end in steps dx: x_start = 1e308 made its count 1e310, whose
+    // reservation threw (exit 5, internal error); a reversed range ran an empty scan.
+    const Outcome far_start = run_softgrain("run dpm.shear_friction --set x_start=1e308" + out);
+    CHECK(far_start.exit_code == 2);
+    CHECK(contains(far_start.output, "'x_end' = 0.7 is below 'x_start' = 1e+308"));
+    const Outcome tiny_dx = run_softgrain("run dpm.shear_friction --set dx=1e-300" + out);
+    CHECK(tiny_dx.exit_code == 2);
+    CHECK(contains(tiny_dx.output, "steps; allowed: at most 2.14748e+09 steps"));
     CHECK(fs::is_empty(dir));
     fs::remove_all(dir);
 }

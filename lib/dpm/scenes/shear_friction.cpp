@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace softgrain::dpm {
@@ -31,6 +32,23 @@ struct ShearFrictionOptions
     bool frozen_scan = false;
     int scan_points = 41; // per direction
 };
+
+// The scan goes from x_start to x_end in steps dx, counted by an int: an empty or reversed range, or a count
+// beyond the counter (x_start = 1e308 made it 1e310, and the reservation of its configurations threw), is
+// refused before the run, naming the keys.
+void check_scan_range(const ShearTestOptions& test)
+{
+    if (!(test.x_end >= test.x_start))
+        throw InputError("'x_end' = " + number_text(test.x_end) + " is below 'x_start' = " +
+                         number_text(test.x_start) + "; allowed: x_end >= x_start (the scan moves mu in +x)");
+    const double steps = std::floor((test.x_end - test.x_start) / test.dx + 1e-9);
+    constexpr double max_steps = std::numeric_limits<int>::max() - 1;
+    if (!(steps <= max_steps))
+        throw InputError("'x_start' = " + number_text(test.x_start) +
+                         " to 'x_end' = " + number_text(test.x_end) +
+                         " in steps 'dx' = " + number_text(test.dx) + " is " + number_text(steps) +
+                         " steps; allowed: at most " + number_text(max_steps) + " steps");
+}
 
 OptionBinding<ShearFrictionOptions> shear_friction_binding()
 {
@@ -90,6 +108,7 @@ OptionBinding<ShearFrictionOptions> shear_friction_binding()
         preferred_shape_parameter(options.test.A0, options.test.nodes); // A0 >= A_min(nodes), or min
         if (options.frozen_scan && options.test.interaction != InteractionKind::smooth)
             throw InputError(frozen_scan_needs);
+        check_scan_range(options.test);
     });
     return binding;
 }
