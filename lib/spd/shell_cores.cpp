@@ -5,6 +5,7 @@
 #include "core/geometry.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace softgrain::spd {
 
@@ -31,6 +32,22 @@ Eigen::VectorXd area_gradient(const Shell& s, const Eigen::Ref<const Eigen::Vect
 bool finite_core(const Shell& s)
 {
     return s.closed && s.K_Omega > 0 && !s.incompressible();
+}
+
+// The constraint direction of an incompressible shell at the model's positions: its vertex range [first,
+// first + size) in the flat vectors, G = dA/dx and M^-1 G, along which both RATTLE stages move the velocities.
+struct ConstraintDirection
+{
+    Eigen::Index first, size;
+    Eigen::VectorXd G, MG;
+};
+ConstraintDirection constraint_direction(const Shell& s, const ShellView& model,
+                                         const Eigen::VectorXd& inverse_mass)
+{
+    const Eigen::Index first = 2 * s.first, size = 2 * s.count;
+    Eigen::VectorXd G = area_gradient(s, model.x.segment(first, size));
+    Eigen::VectorXd MG = inverse_mass.segment(first, size).cwiseProduct(G);
+    return {first, size, std::move(G), std::move(MG)};
 }
 } // namespace
 
@@ -99,9 +116,7 @@ void ShellCores::constrain_positions(const ShellView& model, const Eigen::Vector
     for (std::size_t index = 0; index < model.shells.size(); ++index) {
         const Shell& s = model.shells[index];
         if (!s.incompressible()) continue;
-        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
-        const Eigen::VectorXd G = area_gradient(s, model.x.segment(o, n));
-        const Eigen::VectorXd MG = inverse_mass.segment(o, n).cwiseProduct(G);
+        const auto [o, n, G, MG] = constraint_direction(s, model, inverse_mass);
         const Eigen::VectorXd y = model.x.segment(o, n) + dt * v.segment(o, n);
         const Eigen::VectorXd d = 0.5 * dt * dt * MG;
         const auto area_of = [&](const Eigen::VectorXd& xs) {
@@ -128,9 +143,7 @@ void ShellCores::constrain_velocities(const ShellView& model, const Eigen::Vecto
     for (std::size_t index = 0; index < model.shells.size(); ++index) {
         const Shell& s = model.shells[index];
         if (!s.incompressible()) continue;
-        const Eigen::Index o = 2 * s.first, n = 2 * s.count;
-        const Eigen::VectorXd G = area_gradient(s, model.x.segment(o, n));
-        const Eigen::VectorXd MG = inverse_mass.segment(o, n).cwiseProduct(G);
+        const auto [o, n, G, MG] = constraint_direction(s, model, inverse_mass);
         const double mu = -G.dot(v.segment(o, n)) / (0.5 * dt * G.dot(MG));
         v.segment(o, n) += 0.5 * dt * mu * MG;
         f.segment(o, n) += mu * G;
