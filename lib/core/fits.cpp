@@ -1,6 +1,7 @@
 #include "core/fits.hpp"
 
 #include <gsl/gsl_fit.h>
+#include <gsl/gsl_statistics_double.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +63,17 @@ std::optional<double> fit_power_law_exponent(const std::vector<double>& x, const
 {
     const auto line = fit_power_law(x, y, minimum_points);
     return line ? std::optional<double>(line->slope) : std::nullopt;
+}
+
+SampleMean sample_mean(const std::vector<double>& samples)
+{
+    SampleMean result;
+    if (samples.empty()) return result;
+    result.mean = gsl_stats_mean(samples.data(), 1, samples.size());
+    if (samples.size() < 2) return result;
+    result.standard_deviation = gsl_stats_sd_m(samples.data(), 1, samples.size(), result.mean);
+    result.standard_error = result.standard_deviation / std::sqrt(static_cast<double>(samples.size()));
+    return result;
 }
 
 } // namespace softgrain

@@ -4,6 +4,7 @@
 // than it needs is absent (the scene writes null), never a number made up from too little data.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -30,5 +31,17 @@ std::optional<Line> fit_power_law(const std::vector<double>& x, const std::vecto
 // Its exponent b alone.
 std::optional<double> fit_power_law_exponent(const std::vector<double>& x, const std::vector<double>& y,
                                              std::size_t minimum_points = 2);
+
+// The mean of independent samples (e.g. the packings of an ensemble), the least-squares fit of a constant, with
+// the sample standard deviation (n - 1 in the denominator, gsl_stats_sd) and the standard error of the mean,
+// sd / sqrt(n). Below two samples the spread is unknown: both are NaN (the scene writes null); without a
+// sample the mean is NaN too.
+struct SampleMean
+{
+    double mean = std::numeric_limits<double>::quiet_NaN();
+    double standard_deviation = std::numeric_limits<double>::quiet_NaN();
+    double standard_error = std::numeric_limits<double>::quiet_NaN();
+};
+SampleMean sample_mean(const std::vector<double>& samples);
 
 } // namespace softgrain

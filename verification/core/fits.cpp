@@ -68,3 +68,18 @@ TEST_CASE("too few points give no fit; a fit of unequal lengths is a defect")
     CHECK(fit_power_law({1.0, 2.0}, {1.0, 4.0}));          // two points fit exactly
     CHECK_THROWS_AS(fit_line({1.0, 2.0}, {1.0}), std::logic_error);
 }
+
+TEST_CASE("an ensemble mean carries the sample standard deviation and the standard error of the mean")
+{
+    // 1, 2, 3, 4: mean 5/2, squared deviations 9/4 + 1/4 + 1/4 + 9/4 = 5 over n - 1 = 3, error sd / 2.
+    const SampleMean four = sample_mean({1.0, 2.0, 3.0, 4.0});
+    CHECK_CLOSE(four.mean, 2.5, (Tolerance{1e-15, 0}));
+    CHECK_CLOSE(four.standard_deviation, std::sqrt(5.0 / 3.0), (Tolerance{1e-15, 0}));
+    CHECK_CLOSE(four.standard_error, std::sqrt(5.0 / 3.0) / 2, (Tolerance{1e-15, 0}));
+    // One sample is its own mean, exactly, and has no spread; none has no mean.
+    const SampleMean one = sample_mean({0.8351});
+    CHECK(one.mean == 0.8351);
+    CHECK(std::isnan(one.standard_deviation));
+    CHECK(std::isnan(one.standard_error));
+    CHECK(std::isnan(sample_mean({}).mean));
+}
