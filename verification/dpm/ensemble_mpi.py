@@ -4,12 +4,13 @@
   ensemble_mpi.py SOFTGRAIN MPIEXEC identical   the same results for every number of ranks
   ensemble_mpi.py SOFTGRAIN MPIEXEC failure     a failure on any rank ends every rank with its code and message
 
-identical: small dpm.shear_modulus (3 packings: rank 0 runs members 0 and 2, rank 1 member 1) and
-dpm.shear_modulus3d (model = all: 3 members) ensembles run without mpirun, with `mpirun -n 1` and with
-`mpirun -n 2 --oversubscribe`. Asserted exactly, no tolerance (the members' results travel between ranks
+identical: small dpm.shear_modulus (3 packings: rank 0 runs members 0 and 2, rank 1 member 1),
+dpm.shear_modulus3d (model = all: 3 members) and dpm.jam (3 packings) ensembles run without mpirun, with
+`mpirun -n 1` and with `mpirun -n 2 --oversubscribe`. Asserted exactly, no tolerance (the members' results travel between ranks
 without loss, and member k depends on k alone): the same files, byte-identical tables and summary.json equal
 but for the keys that measure this process (TIMING_KEYS); the output folder holds the result and nothing
-else (the other ranks write nothing).
+else (the other ranks write nothing). And member k is the packing of seed + k alone: each packing's rows of
+the dpm.jam ensemble's pressure.dat are, byte for byte, those of a single-packing run with that seed.
 
 failure: (a) a failure on rank 0 alone outside any member (a foreign file where the result goes, refused
 before the run) while rank 1 runs its members; (b) a numerical failure in every member (a force tolerance
@@ -38,6 +39,9 @@ SHEAR_2D = [*SHEAR_2D_PACKING, "--set", "packings=3"]
 SHEAR_3D = ["dpm.shear_modulus3d", "--set", "model=all", "--set", "particles=4", "--set", "mesh=tetrahedron",
             "--set", "A0=1.9", "--set", "pressure_onset=1e-3", "--set", "pressure_max=1e-2",
             "--set", "pressures=1", "--set", "packings=1"]
+JAM = ["dpm.jam", "--set", "model=shell", "--set", "particles=8", "--set", "nodes_small=6", "--set", "nodes_large=8",
+       "--set", "pressure_onset=1e-4", "--set", "pressure_max=1e-2", "--set", "pressures=2", "--set", "seed=5",
+       "--set", "packings=3"]
 # A force tolerance at the Newton step's round-off (the largest force after it is 1.7e-15 to 3.8e-15 for
 # seeds 1-6 of SHEAR_2D_PACKING): some seeds pass it, others fail.
 ROUND_OFF_TOLERANCE = "3e-15"
@@ -64,7 +68,7 @@ def result_files(out):
 
 def compare_identical(softgrain, mpiexec, work):
     failures = []
-    for scene in (SHEAR_2D, SHEAR_3D):
+    for scene in (SHEAR_2D, SHEAR_3D, JAM):
         name = scene[0]
         results = {}
         for label, launcher in launchers(mpiexec).items():
@@ -93,6 +97,34 @@ def compare_identical(softgrain, mpiexec, work):
             for table in sorted(set(tables) | set(other_tables)):
                 if tables.get(table) != other_tables.get(table):
                     failures.append(f"{name} [{label}]: table {table} differs from the run without mpirun")
+    return failures
+
+
+def data_rows(table):
+    """The rows of a softgrain table (the lines after its comments and its header), as text."""
+    lines = [line for line in Path(table).read_text().splitlines() if not line.startswith("#")]
+    return lines[1:]
+
+
+def compare_members_with_single_runs(softgrain, work):
+    """Each packing k of the dpm.jam ensemble (seed 5: packings 5, 6, 7) against its own run with seed 5 + k."""
+    failures = []
+    out = work / "jam-ensemble"
+    if run([], softgrain, JAM, out).returncode != 0:
+        return [f"dpm.jam ensemble failed in {out}"]
+    ensemble = [row.split(" ", 1) for row in data_rows(out / "dpm.jam" / "pressure.dat")]
+    for k in range(3):
+        single = work / f"jam-single-{k}"
+        done = run([], softgrain, [*JAM, "--set", "packings=1", "--set", f"seed={5 + k}"], single)
+        if done.returncode != 0:
+            failures.append(f"dpm.jam seed {5 + k} exited {done.returncode}: {done.stderr.strip()}")
+            continue
+        member = [rest for packing, rest in ensemble if packing == str(k)]
+        alone = [row.split(" ", 1)[1] for row in data_rows(single / "dpm.jam" / "pressure.dat")]
+        if not alone or member != alone:
+            failures.append(f"dpm.jam packing {k} of the ensemble: rows {member}, alone (seed {5 + k}) {alone}")
+        else:
+            print(f"dpm.jam packing {k}: {len(member)} states, identical to the run of seed {5 + k} alone")
     return failures
 
 
@@ -160,8 +192,8 @@ def main():
     softgrain, mpiexec, mode = sys.argv[1], sys.argv[2], sys.argv[3]
     work = Path(tempfile.mkdtemp(prefix="softgrain-ensemble-mpi-"))
     try:
-        failures = compare_identical(softgrain, mpiexec, work) if mode == "identical" else \
-            check_failures(softgrain, mpiexec, work)
+        failures = compare_identical(softgrain, mpiexec, work) + compare_members_with_single_runs(softgrain, work) \
+            if mode == "identical" else check_failures(softgrain, mpiexec, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     for failure in failures:
