@@ -1,9 +1,9 @@
 #include "compare/ring.hpp"
 
 #include "core/errors.hpp"
-#include "dpm/compress.hpp"
-#include "dpm/system.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/compress.hpp"
+#include "dpm/system/system.hpp"
 #include "spd/elastica.hpp"
 #include "spd/ring.hpp"
 #include "spd/time_step_limits.hpp"

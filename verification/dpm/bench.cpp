@@ -6,7 +6,7 @@
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "core/scene.hpp"
-#include "dpm/jam.hpp"
+#include "dpm/protocols/jam.hpp"
 #include "dpm/scenes/scenes.hpp"
 #include "support/tolerance.hpp"
 

@@ -4,7 +4,7 @@
 //   k_a/2 (a - a0)^2 <= U  ->  |a - a0| <= sqrt(2 U/k_a);   sum k_l/2 (l_i - l0)^2 <= U  ->  |p - N l0| <=
 //   sqrt(2 N U/k_l); with U < 2e-8 k_c d^2, N = 100, a0 ~ 20 d^2, p ~ 16 d: relative errors 1e-5 (a)
 //   and 1.3e-4 (p), so A within 3e-4 of A0 (2 dp/p + da/a), rounded up to 5e-4.
-#include "dpm/boundary_jam.hpp"
+#include "dpm/protocols/boundary_jam.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

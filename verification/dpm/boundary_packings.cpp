@@ -4,7 +4,7 @@
 // 1 degree of a neighbour, single linkage), the largest gap of theta over its range (Fig. 9.18f) and the range
 // of theta over the packings with a 4-cycle. Counts and extremes are exact; the gap is one division of exact
 // differences of small integers and halves, exact too.
-#include "dpm/boundary_jam.hpp"
+#include "dpm/protocols/boundary_jam.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

@@ -4,8 +4,8 @@
 // loads: delta/F = (pi/4 - 2/pi) R^3/(EI) + (4/pi - pi/4) R/(EA) (Roark, ring under diametral load with
 // hoop-extension correction alpha = I/(A R^2)), with EI = k_b l0 and EA = k_l l0 for the discrete shell.
 #include "core/fits.hpp"
-#include "dpm/box_compress.hpp"
-#include "dpm/compress.hpp"
+#include "dpm/protocols/box_compress.hpp"
+#include "dpm/protocols/compress.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

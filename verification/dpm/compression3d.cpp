@@ -6,9 +6,9 @@
 // compression (decision dpm-compress3d-windows).
 #include "core/fits.hpp"
 #include "core/rng.hpp"
-#include "dpm/compress3d.hpp"
-#include "dpm/shape_energy3d.hpp"
-#include "dpm/spring_network.hpp"
+#include "dpm/laws/shape_energy3d.hpp"
+#include "dpm/laws/spring_network.hpp"
+#include "dpm/protocols/compress3d.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Geometry>

@@ -14,9 +14,9 @@
 // below 1e3 round_off = 2e-13; 1e-12 leaves a factor 5 and is still far below any physical difference (one
 // missed contact changes the energy by ~1e-4 of it here).
 #include "core/rng.hpp"
-#include "dpm/interactions.hpp"
-#include "dpm/stress.hpp"
-#include "dpm/system.hpp"
+#include "dpm/analysis/stress.hpp"
+#include "dpm/laws/interactions.hpp"
+#include "dpm/system/system.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

@@ -1,7 +1,7 @@
 // DPM eq. (9.28), Fig. 9.5(a): the dynamical matrix of a compressed triangular (hexagonal) crystal of soft
 // disks against the exact phonon spectrum of the lattice (dpm/crystal.hpp): all 2 n^2 eigenvalues.
-#include "dpm/crystal.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/system/crystal.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

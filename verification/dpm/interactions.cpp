@@ -2,9 +2,9 @@
 // gradient and the Hessian the derivative of the forces, for every term (finite differences on random
 // overlapping configurations); the smooth potential and its forces are continuous across the strip
 // boundary at a concave corner, where U^edge alone jumps (Fig. 9.7d); closed forms of single contacts.
-#include "dpm/interactions.hpp"
+#include "dpm/laws/interactions.hpp"
 #include "core/rng.hpp"
-#include "dpm/system.hpp"
+#include "dpm/system/system.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 

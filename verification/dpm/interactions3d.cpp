@@ -4,7 +4,7 @@
 // configurations, some across the box boundary); contact forces sum to zero (Newton's third law); one
 // contact has the closed form k_c/2 (sigma_mb - r)^2; a whole-box translation by L leaves U unchanged.
 #include "core/rng.hpp"
-#include "dpm/system3d.hpp"
+#include "dpm/system/system3d.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 

@@ -1,7 +1,7 @@
 // The compression schedule of the jamming protocol (DPM sec. 9.4, jam_schedule.hpp) on a one-dimensional
 // packing whose pressure jumps over the target window at a rearrangement (decision dpm-3d-jam-paper-size):
 // bisection from below cannot land in the window, approach from above by decompression can.
-#include "dpm/jam_schedule.hpp"
+#include "dpm/protocols/jam_schedule.hpp"
 #include "core/errors.hpp"
 
 #include <doctest/doctest.h>

@@ -3,7 +3,7 @@
 // phi - phi_c (zeta = 1, O'Hern et al. 2003).
 // ctest-label: slow
 #include "core/fits.hpp"
-#include "dpm/jam.hpp"
+#include "dpm/protocols/jam.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

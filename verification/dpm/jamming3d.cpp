@@ -6,7 +6,7 @@
 // dynamical matrix (eq. 9.28) of a shell packing has exactly the 3 zero modes of the periodic translations
 // plus 6 per rattler (sec. 9.4.3, Fig. 9.15b).
 #include "core/rng.hpp"
-#include "dpm/jam3d.hpp"
+#include "dpm/protocols/jam3d.hpp"
 #include "support/jammed3d.hpp"
 #include "support/tolerance.hpp"
 

@@ -4,7 +4,7 @@
 // ends in force balance at 1 <= P/P_t < 1.01 with both particles in contact, and the dynamical matrix of the
 // shell packing has exactly the 3 zero modes of the periodic translations (sec. 9.4.3, as for rough
 // contacts in jamming3d.cpp). Two icosahedral shells, P_t = 1e-4 k_v v0: about 7 s.
-#include "dpm/jam3d.hpp"
+#include "dpm/protocols/jam3d.hpp"
 #include "support/jammed3d.hpp"
 
 using namespace softgrain;

@@ -5,7 +5,7 @@
 // the Lees-Edwards offset: Sigma_yx = -(1/A) dU/dgamma, for rough and smooth interactions, with contacts
 // across the sheared boundary.
 #include "core/rng.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/analysis/stress.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

@@ -6,8 +6,8 @@
 // the energy under x' = x + dgamma y with the Lees-Edwards offset, Sigma_yx = -(1/V) dU/dgamma, with shape
 // forces of each model of Table 9.1 and contacts across the sheared boundary.
 #include "core/rng.hpp"
-#include "dpm/single_particle3d.hpp"
-#include "dpm/system3d.hpp"
+#include "dpm/protocols/single_particle3d.hpp"
+#include "dpm/system/system3d.hpp"
 #include "support/jammed3d.hpp"
 #include "support/tolerance.hpp"
 

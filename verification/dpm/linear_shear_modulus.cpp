@@ -6,12 +6,12 @@
 //   (b) Xi against a central difference of the gradient with respect to gamma at fixed x;
 //   (c) on small jammed packings, against the finite-strain G of Lees-Edwards steps (shear_modulus.hpp);
 //   (d) on the same packings, the sparse pinned solve against the dense pseudo-inverse of H.
-#include "dpm/linear_shear_modulus.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/jam3d.hpp"
-#include "dpm/shear_modulus.hpp"
-#include "dpm/sparse_modes.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/analysis/linear_shear_modulus.hpp"
+#include "dpm/analysis/sparse_modes.hpp"
+#include "dpm/analysis/stress.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/jam3d.hpp"
+#include "dpm/protocols/shear_modulus.hpp"
 #include "support/packings.hpp"
 #include "support/tolerance.hpp"
 

@@ -3,7 +3,7 @@
 // in closed form and against the text's 1.8188, 1.2861, 1.0984, of the 42-vertex geodesic icosahedron
 // against 1.024; the closed-form bending angles of the regular meshes; A^3D -> 1 as O(1/N).
 #include "core/fits.hpp"
-#include "dpm/shape_energy3d.hpp"
+#include "dpm/laws/shape_energy3d.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

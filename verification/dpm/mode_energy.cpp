@@ -4,7 +4,7 @@
 // quartic direction the exponent is 4; the quartic criterion (Delta U(0.1) > 3 lambda 0.1^2/2) tells the two
 // apart. Tolerances are round-off: each Delta U is a handful of floating-point operations on numbers of size
 // lambda dr^2 (the energy at the minimum is 0, so Delta U has no cancellation).
-#include "dpm/mode_energy.hpp"
+#include "dpm/analysis/mode_energy.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>

@@ -2,8 +2,8 @@
 // rigid rotation and deformation (dpm/modes.hpp decompose_mode). Fields built from known parts must come
 // back with exactly their shares (2D, and 3D as used for the softest mode of Fig. 9.15d-f). The quartic-mode
 // test of Fig. 9.14(c) is in mode_energy.cpp.
-#include "dpm/mesh3d.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/system/mesh3d.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Geometry>

@@ -2,7 +2,7 @@
 // eigenvalue of magnitude below the zero threshold; one below minus the threshold is a negative mode (the
 // packing is a saddle, not a minimum) and is counted apart, never as a zero mode. The 16 x 42 shell packing's
 // "4th zero mode" was such a negative eigenvalue, lambda~ = -2.2e-8.
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
 #include "support/tolerance.hpp"
 
 using namespace softgrain::dpm;

@@ -1,9 +1,9 @@
 // The Newton finisher of the relaxation (newton_relax.hpp, issue 19): its minimum against FIRE run to a
 // tighter tolerance, its quadratic convergence, steps that make and break contacts, and its NumericalError.
-#include "dpm/newton_relax.hpp"
+#include "dpm/relax/newton_relax.hpp"
 #include "core/errors.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>

@@ -1,8 +1,8 @@
 // DPM section 9.4.1, eqs. (9.18)-(9.22): packing fraction of rough deformable particles in a periodic box.
 // The circular segment (9.20) against the closed-form lens; the A_sector identity; the analytic area and
 // each of its four terms against Monte-Carlo integration within three standard errors (Table 9.2).
-#include "dpm/packing_fraction.hpp"
-#include "dpm/packing.hpp"
+#include "dpm/analysis/packing_fraction.hpp"
+#include "dpm/protocols/packing.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

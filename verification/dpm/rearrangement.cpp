@@ -1,9 +1,9 @@
 // DPM section 9.4.2, Fig. 9.13(b, e, f): compression of a jammed smooth-disk packing is reversible along an
 // elastic branch and irreversible at a rearrangement (a discontinuity of P(phi), a changed contact network).
 // Also the contact network of disks (eq. 9.4: a contact is an overlap) under periodic minimum images.
-#include "dpm/rearrangement.hpp"
-#include "dpm/modes.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/protocols/rearrangement.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/analysis/stress.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

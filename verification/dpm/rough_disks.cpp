@@ -3,8 +3,8 @@
 // energy when the particle centres move affinely and the shapes are kept, and the rigid-body FIRE keeps
 // every shape exactly while it reaches force and torque balance.
 #include "core/rng.hpp"
-#include "dpm/rigid.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/analysis/stress.hpp"
+#include "dpm/relax/rigid.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

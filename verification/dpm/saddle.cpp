@@ -3,8 +3,8 @@
 // saddles and minima are known in closed form, and on a one-dimensional packing whose jamming length
 // changes when it leaves its saddle.
 #include "core/fire.hpp"
-#include "dpm/jam_schedule.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam_schedule.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // Hessian is the derivative of the gradient (central finite differences on random configurations);
 // the analytic gradients of the gradient-only (FIRE) path equal the AutoDiff ones to round-off; the shape
 // parameter of section 9.3.1 and its minimum N tan(pi/N)/pi.
-#include "dpm/shape_energy.hpp"
+#include "dpm/laws/shape_energy.hpp"
 #include "core/rng.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"

@@ -4,7 +4,7 @@
 // torques sum to zero) and Euler's theorem for homogeneous measures, x . grad v = 3 v, x . grad s = 2 s,
 // x . grad theta_e = 0 (angles are scale-free), which fixes the gradients' scale independently of any
 // finite difference.
-#include "dpm/shape_energy3d.hpp"
+#include "dpm/laws/shape_energy3d.hpp"
 #include "core/rng.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"

@@ -1,8 +1,8 @@
 // DPM section 9.3.3: effective friction of two particles in simple shear. Rough particles: the maximum
 // mu_eff approaches eq. (9.13) (the rigid, zero-overlap limit) for several (C, N); smooth elastic shells
 // give a much smaller maximum, 0.190 in the paper.
-#include "dpm/shear_friction.hpp"
-#include "dpm/frozen_contact.hpp"
+#include "dpm/protocols/shear_friction.hpp"
+#include "dpm/protocols/frozen_contact.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

@@ -4,8 +4,8 @@
 //   d^2U/dgamma^2 = sum_b [k (x y/r)^2 - f (y^2/r - x^2 y^2/r^3)] = (3/8) k a^2 - (9/8) f a,
 // with f = k (sigma - a) the compressive bond force; P = 3 f a/(2 A_0) = sqrt(3) f/a. Hence
 //   G = (1/A_0) d^2U/dgamma^2 = sqrt(3)/4 k - (3/4) P.
-#include "dpm/shear_modulus.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/protocols/shear_modulus.hpp"
+#include "dpm/analysis/stress.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

@@ -7,7 +7,7 @@
 // in the xz plane nothing; per site (half the bonds, volume a^3/sqrt(2)):
 //   G = (sqrt(2)/a^3) (k a^2/2 - 3 f a/2) = k/(sqrt(2) a) - (3/4) P,   P = (1/3V) sum f r = 2 sqrt(2) f/a^2.
 #include "core/errors.hpp"
-#include "dpm/shear_modulus.hpp"
+#include "dpm/protocols/shear_modulus.hpp"
 #include "support/packings.hpp"
 #include "support/run_softgrain.hpp"
 #include "support/tolerance.hpp"

@@ -7,7 +7,7 @@
 //    friction = -T); for T > mu_w W every floor vertex slips and the particle slides at the terminal speed
 //    v = (T - mu_w W)/(c n) set by the vertex damping c on its n vertices.
 #include "core/errors.hpp"
-#include "dpm/slump.hpp"
+#include "dpm/protocols/slump.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

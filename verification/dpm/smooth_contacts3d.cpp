@@ -14,9 +14,9 @@
 //     a vertex pushed through a face is a NumericalError.
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "dpm/interactions3d.hpp"
-#include "dpm/single_particle3d.hpp"
-#include "dpm/system3d.hpp"
+#include "dpm/laws/interactions3d.hpp"
+#include "dpm/protocols/single_particle3d.hpp"
+#include "dpm/system/system3d.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 

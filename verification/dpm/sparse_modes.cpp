@@ -15,10 +15,10 @@
 // round-off, are one) are only defined as a subspace; the sine of the largest principal angle between the
 // dense and the sparse subspace is bounded by Davis-Kahan, (residual) / (gap to the rest of the spectrum),
 // with the residual bound above.
-#include "dpm/sparse_modes.hpp"
+#include "dpm/analysis/sparse_modes.hpp"
 #include "core/errors.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/jam3d.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/jam3d.hpp"
 #include "support/packings.hpp"
 #include "support/tolerance.hpp"
 

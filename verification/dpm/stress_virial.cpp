@@ -3,8 +3,8 @@
 // homogeneous strain of every vertex and of the box. Holds for any configuration (not only equilibria):
 // the test uses random overlapping particles across the periodic boundaries, rough and smooth.
 #include "core/rng.hpp"
-#include "dpm/packing_fraction.hpp"
-#include "dpm/stress.hpp"
+#include "dpm/analysis/packing_fraction.hpp"
+#include "dpm/analysis/stress.hpp"
 #include "support/tolerance.hpp"
 
 #include <numbers>

@@ -1,8 +1,8 @@
 // DPM section 9.4.3, Fig. 9.14(a): zero modes of the dynamical matrix (eq. 9.28) of single particles.
 // Floppy (A0 > A_min): N_dof - N_c = 2N - (N + 1) = N - 1; elastic shell and surface-tension particle: 3
 // (two translations, one rotation). Threshold lambda~ < 1e-13 (the paper's).
-#include "dpm/modes.hpp"
-#include "dpm/single_particle.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/single_particle.hpp"
 #include "support/tolerance.hpp"
 
 using namespace softgrain;

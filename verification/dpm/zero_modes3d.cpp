@@ -2,7 +2,7 @@
 // particles. A floppy particle (k_v, k_a > 0, A0 > A_min) has N_dof - N_f - 1 = 3N - (2N - 4) - 1 = N + 3
 // zero modes (45 for N = 42); an elastic shell and a surface-tension particle only the 6 rigid-body modes.
 // Counts are exact integers; a mode is zero below the paper's threshold lambda~ < 1e-10 (in k_v v0^(4/3)).
-#include "dpm/single_particle3d.hpp"
+#include "dpm/protocols/single_particle3d.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>

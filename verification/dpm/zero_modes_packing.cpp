@@ -8,9 +8,9 @@
 // a negative eigenvalue counted, 5), and a particle held by one contact of vanishing force was not yet a
 // rattler. Rattlers are now the particles whose contact forces are round-off (rattlers), and the packing's
 // own zero modes those that move more than its rattlers (zero_modes_beyond_rattlers).
-#include "dpm/contact_list.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/system/contact_list.hpp"
 #include "support/tolerance.hpp"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 // (eqs. (6)-(7), mu = 0.3), the Laguerre tessellation (a tiling, two links per interior interface) and the
 // quasi-static balance of a small elastic tissue.
 #include "core/rng.hpp"
-#include "dpm/local_derivatives.hpp"
+#include "dpm/laws/local_derivatives.hpp"
 #include "spd/cohesive_link.hpp"
 #include "spd/time_step_limits.hpp"
 #include "spd/tissue.hpp"

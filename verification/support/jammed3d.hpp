@@ -9,8 +9,8 @@
 // 9.4.3: 3 periodic translations plus 6 per rattler).
 #pragma once
 
-#include "dpm/jam3d.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam3d.hpp"
 
 #include <doctest/doctest.h>
 

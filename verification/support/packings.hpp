@@ -2,10 +2,10 @@
 // jammed 2D and 3D packings polished to round-off forces (the reference systems of the mode and modulus tests).
 #pragma once
 
-#include "dpm/jam.hpp"
-#include "dpm/jam3d.hpp"
-#include "dpm/modes.hpp"
-#include "dpm/system3d.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/jam3d.hpp"
+#include "dpm/system/system3d.hpp"
 
 #include <cmath>
 #include <cstdint>

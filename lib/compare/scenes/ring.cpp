@@ -4,7 +4,7 @@
 #include "compare/scenes/scenes.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/system.hpp"
+#include "dpm/system/system.hpp"
 #include "spd/elastica.hpp"
 #include "spd/shell_model.hpp"
 

@@ -17,9 +17,9 @@
 
 #include "core/errors.hpp"
 #include "core/output.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/jam3d.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/jam3d.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <array>

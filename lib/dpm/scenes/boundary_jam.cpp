@@ -6,8 +6,8 @@
 
 #include "core/errors.hpp"
 #include "core/output.hpp"
-#include "dpm/boundary_jam.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/boundary_jam.hpp"
 
 #include <algorithm>
 #include <cmath>

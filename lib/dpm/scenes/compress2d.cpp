@@ -6,9 +6,9 @@
 #include "core/fits.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/compress.hpp"
-#include "dpm/spring_network.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/spring_network.hpp"
+#include "dpm/protocols/compress.hpp"
 
 #include <cmath>
 

@@ -8,10 +8,10 @@
 #include "core/fits.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/compress3d.hpp"
-#include "dpm/shape_energy3d.hpp"
-#include "dpm/spring_network.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/shape_energy3d.hpp"
+#include "dpm/laws/spring_network.hpp"
+#include "dpm/protocols/compress3d.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -3,8 +3,8 @@
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/output.hpp"
-#include "dpm/box_compress.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/box_compress.hpp"
 
 namespace softgrain::dpm {
 

@@ -3,10 +3,10 @@
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/crystal.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/system/crystal.hpp"
 
 #include <algorithm>
 #include <cmath>

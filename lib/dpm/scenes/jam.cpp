@@ -6,8 +6,8 @@
 #include "core/ensemble.hpp"
 #include "core/fits.hpp"
 #include "core/output.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/jam.hpp"
 
 #include <nlohmann/json.hpp>
 

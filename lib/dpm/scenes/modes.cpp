@@ -1,18 +1,18 @@
 // dpm.modes: eigenvalues of the dynamical matrix (eq. 9.28) of a single particle of Table 9.1 and the
 // energy change along each mode (Figs. 9.14a, 9.14c, 9.5 single-particle analogues), or of a jammed packing
 // of them (Fig. 9.14b).
-#include "dpm/modes.hpp"
+#include "dpm/analysis/modes.hpp"
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/mode_energy.hpp"
-#include "dpm/preferred_shape.hpp"
+#include "dpm/analysis/mode_energy.hpp"
+#include "dpm/analysis/sparse_modes.hpp"
+#include "dpm/analysis/stress.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/preferred_shape.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/single_particle.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/single_particle.hpp"
-#include "dpm/sparse_modes.hpp"
-#include "dpm/stress.hpp"
-#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>

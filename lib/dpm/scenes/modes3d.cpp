@@ -4,13 +4,13 @@
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/jam3d.hpp"
-#include "dpm/mode_energy.hpp"
-#include "dpm/modes.hpp"
+#include "dpm/analysis/mode_energy.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/analysis/sparse_modes.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/jam3d.hpp"
+#include "dpm/protocols/single_particle3d.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/single_particle3d.hpp"
-#include "dpm/sparse_modes.hpp"
-#include "dpm/vtk_frames.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

@@ -3,9 +3,9 @@
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/output.hpp"
-#include "dpm/packing.hpp"
-#include "dpm/packing_fraction.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/packing_fraction.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/packing.hpp"
 
 namespace softgrain::dpm {
 

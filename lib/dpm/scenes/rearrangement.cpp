@@ -4,8 +4,8 @@
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/output.hpp"
-#include "dpm/rearrangement.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/rearrangement.hpp"
 
 #include <cmath>
 

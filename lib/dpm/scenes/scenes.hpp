@@ -6,7 +6,7 @@
 #include "core/option_binding.hpp"
 #include "core/resources.hpp"
 #include "core/scene.hpp"
-#include "dpm/jam.hpp"
+#include "dpm/protocols/jam.hpp"
 
 #include <cstddef>
 

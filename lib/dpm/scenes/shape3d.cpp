@@ -2,10 +2,10 @@
 // parameter A^3D = s^(3/2)/(6 sqrt(pi) v) of the undeformed mesh (the text's A_min^3D).
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/mesh3d.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/shape_energy3d.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/shape_energy3d.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/system/mesh3d.hpp"
 
 #include <algorithm>
 

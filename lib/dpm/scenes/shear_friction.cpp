@@ -1,12 +1,12 @@
 // dpm.shear_friction: the simple-shear test of section 9.3.3 (Figs. 9.8, 9.9): mu_eff against x/D.
-#include "dpm/shear_friction.hpp"
+#include "dpm/protocols/shear_friction.hpp"
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/frozen_contact.hpp"
-#include "dpm/preferred_shape.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/preferred_shape.hpp"
+#include "dpm/protocols/frozen_contact.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 #include "core/ensemble.hpp"
 #include "core/errors.hpp"
 #include "core/output.hpp"
-#include "dpm/jam.hpp"
-#include "dpm/shear_modulus_ensemble.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/shear_modulus_ensemble.hpp"
 
 namespace softgrain::dpm {
 

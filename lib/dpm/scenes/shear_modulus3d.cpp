@@ -8,10 +8,10 @@
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/jam3d.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/jam3d.hpp"
+#include "dpm/protocols/shear_modulus_ensemble.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/shear_modulus_ensemble.hpp"
-#include "dpm/vtk_frames.hpp"
 
 #include <algorithm>
 #include <optional>

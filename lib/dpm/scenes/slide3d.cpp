@@ -12,10 +12,10 @@
 #include "core/errors.hpp"
 #include "core/option_binding.hpp"
 #include "core/output.hpp"
-#include "dpm/interactions3d.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/laws/interactions3d.hpp"
 #include "dpm/scenes/scenes.hpp"
-#include "dpm/system3d.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/system/system3d.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>

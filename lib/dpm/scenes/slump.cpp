@@ -4,8 +4,8 @@
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/output.hpp"
-#include "dpm/slump.hpp"
-#include "dpm/vtk_frames.hpp"
+#include "dpm/analysis/vtk_frames.hpp"
+#include "dpm/protocols/slump.hpp"
 
 #include <algorithm>
 #include <cmath>

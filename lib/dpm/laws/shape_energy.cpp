@@ -1,0 +1,162 @@
+#include "dpm/laws/shape_energy.hpp"
+
+#include "core/errors.hpp"
+#include "core/geometry.hpp"
+
+#include <stdexcept>
+
+namespace softgrain::dpm {
+
+namespace {
+
+// Index of vertex i (mod n), -n <= i < 2n, of the particle starting at `first` (a comparison, not an
+// integer division: these indices are taken at every vertex of every force evaluation).
+int vertex(int first, int n, int i)
+{
+    return first + (i < 0 ? i + n : (i >= n ? i - n : i));
+}
+
+// The edge from vertex i to vertex i + 1, the corner (i - 1, i, i + 1) at vertex i.
+std::array<int, 2> edge_points(int first, int n, int i)
+{
+    return {vertex(first, n, i), vertex(first, n, i + 1)};
+}
+
+std::array<int, 3> corner_points(int first, int n, int i)
+{
+    return {vertex(first, n, i - 1), vertex(first, n, i), vertex(first, n, i + 1)};
+}
+
+// Eq. (9.1) with its gradient through the analytic local gradients (decision dpm-2d-analytic-gradient): the
+// same terms as the AutoDiff path below; the edge length is computed once per edge for both k_l and gamma,
+// d U/d l = k_l (l - l0) + gamma.
+double shape_energy_with_gradient(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
+                                  Eigen::VectorXd& gradient, unsigned terms)
+{
+    const auto edge = [first, n](int i) { return edge_points(first, n, i); };
+    double energy = 0;
+    if ((terms & area_term) && shape.ka != 0)
+        energy += penalty_of_sum_with_gradient<2, 2>(shape.ka, shape.a0, shoelace_term,
+                                                     shoelace_term_gradient, n, edge, x, gradient);
+    const double kl = (terms & edge_term) ? shape.kl : 0;
+    const double gamma = (terms & line_tension_term) ? shape.gamma : 0;
+    if (kl != 0 || gamma != 0)
+        for (int i = 0; i < n; ++i) {
+            const auto points = edge(i);
+            energy += add_penalty_and_tension<2, 2>(edge_length_gradient(gather<2, 2>(x, points)), points, kl,
+                                                    shape.l0, gamma, gradient);
+        }
+    if ((terms & bending_term) && shape.kb != 0)
+        for (int i = 0; i < n; ++i) {
+            const auto points = corner_points(first, n, i);
+            energy += add_penalty_and_tension<2, 3>(turning_angle_gradient(gather<2, 3>(x, points)), points,
+                                                    shape.kb, shape.theta0, 0.0, gradient);
+        }
+    return energy;
+}
+
+} // namespace
+
+LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    const Eigen::Vector2d r = x.segment<2>(2) - x.segment<2>(0);
+    LocalGradient<4> d;
+    d.value = edge_length(x);
+    const Eigen::Vector2d unit = r / d.value;
+    d.gradient << -unit, unit;
+    return d;
+}
+
+LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    LocalGradient<4> d;
+    d.value = shoelace_term(x);
+    d.gradient << 0.5 * x(3), -0.5 * x(2), -0.5 * x(1), 0.5 * x(0);
+    return d;
+}
+
+LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x)
+{
+    const Eigen::Vector2d incoming = x.segment<2>(2) - x.segment<2>(0);
+    const Eigen::Vector2d outgoing = x.segment<2>(4) - x.segment<2>(2);
+    // d phi/d e = (-e_y, e_x)/|e|^2 for the polar angle phi of an edge e.
+    const Eigen::Vector2d g0 = Eigen::Vector2d(-incoming.y(), incoming.x()) / incoming.squaredNorm();
+    const Eigen::Vector2d g2 = Eigen::Vector2d(-outgoing.y(), outgoing.x()) / outgoing.squaredNorm();
+    LocalGradient<6> d;
+    d.value = turning_angle(x);
+    d.gradient << g0, -(g0 + g2), g2;
+    return d;
+}
+
+double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
+                    Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
+{
+    if (gradient && !hessian) return shape_energy_with_gradient(shape, x, first, n, *gradient, terms);
+    double energy = 0;
+    if ((terms & area_term) && shape.ka != 0)
+        energy += penalty_of_sum<2, 2>(
+            shape.ka, shape.a0, shoelace_term, n, [first, n](int i) { return edge_points(first, n, i); },
+            first, n, x, gradient, hessian);
+    const LocalPenalty edge{edge_length, shape.kl, shape.l0};
+    const LocalTension tension{edge_length, shape.gamma};
+    const LocalPenalty bending{turning_angle, shape.kb, shape.theta0};
+    for (int i = 0; i < n; ++i) {
+        const std::array<int, 2> points = edge_points(first, n, i - 1);
+        if ((terms & edge_term) && shape.kl != 0)
+            energy += add_local_term<2, 2>(edge, points, gather<2, 2>(x, points), gradient, hessian);
+        if ((terms & line_tension_term) && shape.gamma != 0)
+            energy += add_local_term<2, 2>(tension, points, gather<2, 2>(x, points), gradient, hessian);
+        const std::array<int, 3> corner = corner_points(first, n, i);
+        if ((terms & bending_term) && shape.kb != 0)
+            energy += add_local_term<2, 3>(bending, corner, gather<2, 3>(x, corner), gradient, hessian);
+    }
+    return energy;
+}
+
+double particle_area(const Eigen::VectorXd& x, int first, int n)
+{
+    return polygon_signed_area(x.segment(2 * first, 2 * n).reshaped(2, n));
+}
+
+double particle_perimeter(const Eigen::VectorXd& x, int first, int n)
+{
+    return polygon_perimeter(x.segment(2 * first, 2 * n).reshaped(2, n));
+}
+
+std::string shape_model_name(ShapeModel model)
+{
+    switch (model) {
+    case ShapeModel::floppy:
+        return "floppy";
+    case ShapeModel::shell:
+        return "shell";
+    case ShapeModel::surface_tension:
+        return "surface_tension";
+    }
+    throw std::logic_error("shape_model_name: not a ShapeModel");
+}
+
+ShapeParameters table_9_1_parameters(ShapeModel model, int n, double a0, double A0, const ShapeStiffness& k)
+{
+    ShapeParameters shape;
+    shape.ka = k.ka;
+    shape.a0 = a0;
+    shape.l0 = std::sqrt(4.0 * std::numbers::pi * a0 * A0) / n;
+    shape.theta0 = 2.0 * std::numbers::pi / n;
+    switch (model) {
+    case ShapeModel::floppy:
+        shape.kl = k.kl;
+        break;
+    case ShapeModel::shell:
+        shape.kl = k.kl;
+        shape.kb = k.kb;
+        break;
+    case ShapeModel::surface_tension:
+        shape.kl = k.kl_surface;
+        shape.gamma = k.gamma;
+        break;
+    }
+    return shape;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,240 @@
+// Shape energy of a 2D deformable particle, DPM eq. (9.1):
+//
+//   U_shape = k_a/2 (a - a0)^2 + sum_i k_l/2 (l_i - l0)^2 + sum_i k_b/2 (theta_i - theta0)^2 + gamma p
+//
+// a: signed (shoelace) area of the polygon, positive for counter-clockwise vertices; l_i: length of the
+// edge from vertex i-1 to vertex i; theta_i: turning (bending) angle at vertex i between the edges
+// (i-1 -> i) and (i -> i+1), atan2(cross, dot), so a convex CCW regular N-gon has theta_i = 2 pi/N;
+// p = sum_i l_i (line tension gamma). Units: lengths [L], k_a [E/L^4], k_l [E/L^2], k_b [E], gamma [E/L].
+// Sign: U_shape >= 0 for k_a, k_l, k_b, gamma >= 0; shape_energy adds the gradient dU/dx = minus the forces.
+// Valid for a simple (not self-intersecting) counter-clockwise polygon, unwrapped, with edges of non-zero
+// length (the gradient of l_i is singular at l_i = 0) and turning angles away from +-pi, where theta_i
+// jumps by 2 pi (an edge folded back onto its neighbour). A clockwise polygon has a < 0.
+//
+// Each term is written once as a local function of the coordinates it depends on, templated on the
+// scalar; the exact Hessian follows from local_derivatives.hpp, and so do the forces when the Hessian is
+// asked for too; forces alone (FIRE) use the analytic gradients of the local measures below. The area term
+// is a penalty of a sum of local measures (shoelace terms); its derivatives follow by the chain rule from
+// theirs. 3D shells (eq. 9.2, shape_energy3d.hpp) reuse harmonic_penalty, LocalGradient, the penalty and
+// tension terms, add_penalty_and_tension and the penalty of a sum with a face volume.
+#pragma once
+
+#include "dpm/laws/local_derivatives.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace softgrain::dpm {
+
+// k/2 (q - q0)^2: the form of every penalty of eqs. (9.1) and (9.2).
+template <class Scalar>
+Scalar harmonic_penalty(double k, const Scalar& q, double q0)
+{
+    const Scalar deviation = q - q0;
+    return Scalar(0.5 * k) * deviation * deviation;
+}
+
+// The local measures of eq. (9.1). Each is a named generic callable (not a function template) so that it
+// can be handed to the penalty and tension terms below and to the AutoDiff machinery.
+
+// Length of the edge between the two points of x = (x0, y0, x1, y1).
+inline constexpr auto edge_length = []<class Scalar>(const Eigen::Matrix<Scalar, 4, 1>& x) -> Scalar {
+    using std::sqrt;
+    const Scalar dx = x(2) - x(0), dy = x(3) - x(1);
+    return Scalar(sqrt(dx * dx + dy * dy));
+};
+
+// Turning angle at the middle point of x = (previous, vertex, next): the signed angle from the incoming
+// edge to the outgoing edge, in (-pi, pi]; positive where the polygon turns counter-clockwise.
+inline constexpr auto turning_angle = []<class Scalar>(const Eigen::Matrix<Scalar, 6, 1>& x) -> Scalar {
+    using std::atan2;
+    const Scalar ix = x(2) - x(0), iy = x(3) - x(1), ox = x(4) - x(2), oy = x(5) - x(3);
+    const Scalar cross = ix * oy - iy * ox, dot = ix * ox + iy * oy;
+    return Scalar(atan2(cross, dot));
+};
+
+// One shoelace term (x0 y1 - x1 y0)/2 of the polygon area; the sum over the edges is the signed area.
+inline constexpr auto shoelace_term = []<class Scalar>(const Eigen::Matrix<Scalar, 4, 1>& x) -> Scalar {
+    return Scalar(0.5) * (x(0) * x(3) - x(2) * x(1));
+};
+
+// Value and analytic first derivatives of a local measure of N coordinates.
+template <int N>
+struct LocalGradient
+{
+    double value = 0;
+    Eigen::Matrix<double, N, 1> gradient;
+};
+
+// Analytic first derivatives of the three measures above, for the gradient-only path (FIRE): the AutoDiff
+// gradient of the same measures costs several times more (decision dpm-2d-analytic-gradient); the Hessian
+// keeps AutoDiff. Verified against the AutoDiff gradients to round-off (verification/dpm/shape_energy.cpp).
+//   grad edge_length: d l/d r1 = (r1 - r0)/l = -d l/d r0; undefined at l = 0;
+//   grad shoelace_term = (y1, -x1, -y0, x0)/2;
+//   grad turning_angle: theta = phi(o) - phi(i) (mod 2 pi) with phi(e) the polar angle of an edge
+//     e = (e_x, e_y), d phi/d e = (-e_y, e_x)/|e|^2, for the incoming edge i = r1 - r0 and the outgoing
+//     edge o = r2 - r1: d theta/d r0 = (-i_y, i_x)/|i|^2, d theta/d r2 = (-o_y, o_x)/|o|^2,
+//     d theta/d r1 = -(d theta/d r0 + d theta/d r2) (translation invariance); undefined where an edge
+//     has length 0.
+LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x);
+LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x);
+LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x);
+
+// The two forms a local measure q enters eqs. (9.1) and (9.2) in, as local terms (local_derivatives.hpp):
+// the penalty k/2 (q - q0)^2 (edge length and turning angle in 2D; face area and dihedral angle in 3D)
+// and the tension gamma q (line tension of an edge, surface tension of a face).
+template <class Measure>
+struct LocalPenalty
+{
+    Measure measure;
+    double k, rest;
+    template <class Vector>
+    typename Vector::Scalar operator()(const Vector& x) const
+    {
+        return harmonic_penalty(k, measure(x), rest);
+    }
+};
+
+template <class Measure>
+struct LocalTension
+{
+    Measure measure;
+    double gamma;
+    template <class Vector>
+    typename Vector::Scalar operator()(const Vector& x) const
+    {
+        using Scalar = typename Vector::Scalar;
+        return Scalar(gamma) * measure(x);
+    }
+};
+
+// Penalty and tension of one local measure q at once, from its analytic gradient d (the gradient-only
+// path): adds (k (q - q0) + gamma) grad q into `gradient` at `points` and returns k/2 (q - q0)^2 + gamma q.
+// A term that is switched off has k = 0 or gamma = 0.
+template <int Dim, int K>
+double add_penalty_and_tension(const LocalGradient<K * Dim>& d, const std::array<int, K>& points, double k,
+                               double rest, double gamma, Eigen::VectorXd& gradient)
+{
+    scatter_gradient<Dim, K>(d.gradient, points, k * (d.value - rest) + gamma, gradient);
+    return harmonic_penalty(k, d.value, rest) + gamma * d.value;
+}
+
+// k/2 (Q - Q0)^2 of a sum Q = sum_j q_j of local measures over the `elements` point sets points_of(j),
+// j = 0 ... elements - 1 (the area of eq. 9.1 over the shoelace terms, the volume of eq. 9.2 over the face
+// volumes), all of them among the `count` points first ... first + count - 1 of x (one particle). Adds the
+// gradient k (Q - Q0) grad Q and the Hessian k (grad Q grad Q^T + (Q - Q0) hess Q) when they are given,
+// with grad Q and hess Q assembled from the AutoDiff derivatives of the local measures in the particle's
+// own coordinates.
+template <int Dim, int K, class Measure, class PointsOf>
+double penalty_of_sum(double k, double rest, const Measure& measure, int elements, const PointsOf& points_of,
+                      int first, int count, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                      HessianSink hessian)
+{
+    const int dofs = Dim * count;
+    Eigen::VectorXd grad_sum = Eigen::VectorXd::Zero(gradient || hessian ? dofs : 0);
+    Eigen::MatrixXd hess_sum = Eigen::MatrixXd::Zero(hessian ? dofs : 0, hessian ? dofs : 0);
+    double sum = 0;
+    for (int j = 0; j < elements; ++j) {
+        const std::array<int, K> points = points_of(j);
+        std::array<int, K> own_points; // indices within the particle
+        for (int a = 0; a < K; ++a)
+            own_points[a] = points[a] - first;
+        sum +=
+            add_local_term<Dim, K>(measure, own_points, gather<Dim, K>(x, points),
+                                   gradient || hessian ? &grad_sum : nullptr, hessian ? &hess_sum : nullptr);
+    }
+    const double deviation = sum - rest;
+    if (gradient) gradient->segment(Dim * first, dofs) += k * deviation * grad_sum;
+    if (hessian)
+        hessian.add(Dim * first, Dim * first, k * (grad_sum * grad_sum.transpose() + deviation * hess_sum));
+    return harmonic_penalty(k, sum, rest);
+}
+
+// The same penalty with its gradient from the analytic local gradients (the gradient-only path), in two
+// passes, the sum Q and then k (Q - Q0) grad q_j scattered element by element: no buffer.
+template <int Dim, int K, class Measure, class MeasureGradient, class PointsOf>
+double penalty_of_sum_with_gradient(double k, double rest, const Measure& measure,
+                                    const MeasureGradient& measure_gradient, int elements,
+                                    const PointsOf& points_of, const Eigen::VectorXd& x,
+                                    Eigen::VectorXd& gradient)
+{
+    double sum = 0;
+    for (int j = 0; j < elements; ++j)
+        sum += measure(gather<Dim, K>(x, points_of(j)));
+    const double slope = k * (sum - rest);
+    for (int j = 0; j < elements; ++j) {
+        const std::array<int, K> points = points_of(j);
+        scatter_gradient<Dim, K>(measure_gradient(gather<Dim, K>(x, points)).gradient, points, slope,
+                                 gradient);
+    }
+    return harmonic_penalty(k, sum, rest);
+}
+
+// Parameters of eq. (9.1) for one particle, with uniform rest edge length and rest angle.
+struct ShapeParameters
+{
+    double ka = 0;     // area stiffness k_a [E/L^4]
+    double a0 = 0;     // preferred area a_0 [L^2]
+    double kl = 0;     // edge stiffness k_l [E/L^2]
+    double l0 = 0;     // preferred edge length l_0 [L]
+    double kb = 0;     // bending stiffness k_b [E]
+    double theta0 = 0; // preferred turning angle theta_0 [rad]
+    double gamma = 0;  // line tension gamma [E/L]
+};
+
+// The terms of eq. (9.1), so that each can be evaluated and checked alone.
+enum ShapeTerm : unsigned {
+    area_term = 1u,
+    edge_term = 2u,
+    bending_term = 4u,
+    line_tension_term = 8u,
+    all_shape_terms = 15u
+};
+
+// Shape energy of the particle whose vertices are points first ... first + n - 1 of the flat array x
+// (counter-clockwise, unwrapped: no periodic image inside a particle). Adds -(forces), i.e. the gradient,
+// and the Hessian into `gradient` and `hessian` when they are given. `terms` selects terms of eq. (9.1).
+double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
+                    Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms = all_shape_terms);
+
+// Signed area of that particle's polygon.
+double particle_area(const Eigen::VectorXd& x, int first, int n);
+// Perimeter of that particle's polygon.
+double particle_perimeter(const Eigen::VectorXd& x, int first, int n);
+
+// Shape parameter A = p^2/(4 pi a) (section 9.3.1).
+inline double shape_parameter(double perimeter, double area)
+{
+    return perimeter * perimeter / (4.0 * std::numbers::pi * area);
+}
+
+// Its minimum over N-gons, reached by the regular polygon: A_min = N tan(pi/N)/pi (section 9.3.1).
+inline double minimum_shape_parameter(int n)
+{
+    return n * std::tan(std::numbers::pi / n) / std::numbers::pi;
+}
+
+// Circumradius of the regular N-gon of area a: a = N R^2 sin(2 pi/N)/2.
+inline double regular_polygon_radius(int n, double area)
+{
+    return std::sqrt(2.0 * area / (n * std::sin(2.0 * std::numbers::pi / n)));
+}
+
+// The three particle types of Table 9.1.
+enum class ShapeModel { floppy, shell, surface_tension };
+std::string shape_model_name(ShapeModel model); // "floppy" | "shell" | "surface_tension"
+
+// Parameters of Table 9.1 for a particle of n vertices, preferred area a0 and preferred shape parameter
+// A0 >= A_min(n): l0 = sqrt(4 pi a0 A0)/n (so that (n l0)^2/(4 pi a0) = A0), theta0 = 2 pi/n.
+//   floppy:          k_a, k_l > 0, k_b = 0, gamma = 0
+//   shell:           k_a, k_l, k_b > 0, gamma = 0
+//   surface_tension: k_a > 0, k_l = kl_surface (Table 9.1: ~0), k_b = 0, gamma > 0
+struct ShapeStiffness
+{
+    double ka = 1, kl = 1, kb = 1, gamma = 0.1, kl_surface = 0;
+};
+ShapeParameters table_9_1_parameters(ShapeModel model, int n, double a0, double A0, const ShapeStiffness& k);
+
+} // namespace softgrain::dpm

@@ -1,0 +1,163 @@
+#include "dpm/laws/shape_energy3d.hpp"
+
+namespace softgrain::dpm {
+
+namespace {
+
+std::array<int, 3> face_points(const std::array<int, 3>& f, int first)
+{
+    return {first + f[0], first + f[1], first + f[2]};
+}
+
+std::array<int, 4> edge_points(const MeshEdge& e, int first)
+{
+    return {first + e.a, first + e.b, first + e.c, first + e.d};
+}
+
+// Eq. (9.2) with its gradient through the analytic local gradients (decision dpm-3d-analytic-gradient):
+// the same terms as the AutoDiff path below; the face area is computed once per face for both k_a and
+// gamma, d U/d x = (k_a (a_f - a_f0) + gamma) d a_f/d x.
+double shape_energy_with_gradient3d(const ShapeParameters3d& shape, const TriangleMesh& mesh,
+                                    const Eigen::VectorXd& x, int first, Eigen::VectorXd& gradient,
+                                    unsigned terms)
+{
+    double energy = 0;
+    if ((terms & volume_term3d) && shape.kv != 0)
+        energy += penalty_of_sum_with_gradient<3, 3>(
+            shape.kv, shape.v0, face_volume, face_volume_gradient, mesh.face_count(),
+            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, x, gradient);
+    const double ka = (terms & face_area_term3d) ? shape.ka : 0;
+    const double gamma = (terms & surface_tension_term3d) ? shape.gamma : 0;
+    if (ka != 0 || gamma != 0)
+        for (int f = 0; f < mesh.face_count(); ++f) {
+            const auto points = face_points(mesh.faces[f], first);
+            energy += add_penalty_and_tension<3, 3>(triangle_area_gradient(gather<3, 3>(x, points)), points,
+                                                    ka, ka != 0 ? shape.a0[f] : 0.0, gamma, gradient);
+        }
+    if ((terms & bending_term3d) && shape.kb != 0)
+        for (int e = 0; e < mesh.edge_count(); ++e) {
+            const auto points = edge_points(mesh.edges[e], first);
+            energy += add_penalty_and_tension<3, 4>(dihedral_angle_gradient(gather<3, 4>(x, points)), points,
+                                                    shape.kb, shape.theta0[e], 0.0, gradient);
+        }
+    return energy;
+}
+
+} // namespace
+
+LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x)
+{
+    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
+    LocalGradient<9> d;
+    d.value = face_volume(x);
+    d.gradient << r1.cross(r2) / 6.0, r2.cross(r0) / 6.0, r0.cross(r1) / 6.0;
+    return d;
+}
+
+LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x)
+{
+    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
+    const Eigen::Vector3d m = (r1 - r0).cross(r2 - r0).normalized();
+    const Eigen::Vector3d g1 = 0.5 * (r2 - r0).cross(m), g2 = 0.5 * m.cross(r1 - r0);
+    LocalGradient<9> d;
+    d.value = triangle_area(x);
+    d.gradient << -(g1 + g2), g1, g2;
+    return d;
+}
+
+LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x)
+{
+    const Eigen::Vector3d a = x.segment<3>(0), b = x.segment<3>(3), c = x.segment<3>(6), dd = x.segment<3>(9);
+    const Eigen::Vector3d e = b - a;
+    const Eigen::Vector3d n1 = e.cross(c - a), n2 = (a - b).cross(dd - b);
+    const double e2 = e.squaredNorm(), length = std::sqrt(e2);
+    const Eigen::Vector3d gc = -length / n1.squaredNorm() * n1, gd = -length / n2.squaredNorm() * n2;
+    const Eigen::Vector3d gb = -((c - a).dot(e) / e2 * gc + (dd - a).dot(e) / e2 * gd);
+    LocalGradient<12> d;
+    d.value = dihedral_angle(x);
+    d.gradient << -(gb + gc + gd), gb, gc, gd;
+    return d;
+}
+
+double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
+                      int first, Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
+{
+    if (gradient && !hessian) return shape_energy_with_gradient3d(shape, mesh, x, first, *gradient, terms);
+    double energy = 0;
+    if ((terms & volume_term3d) && shape.kv != 0)
+        energy += penalty_of_sum<3, 3>(
+            shape.kv, shape.v0, face_volume, mesh.face_count(),
+            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, first, mesh.vertex_count(),
+            x, gradient, hessian);
+    const LocalTension tension{triangle_area, shape.gamma};
+    for (int f = 0; f < mesh.face_count(); ++f) {
+        const auto points = face_points(mesh.faces[f], first);
+        if ((terms & face_area_term3d) && shape.ka != 0)
+            energy += add_local_term<3, 3>(LocalPenalty{triangle_area, shape.ka, shape.a0[f]}, points,
+                                           gather<3, 3>(x, points), gradient, hessian);
+        if ((terms & surface_tension_term3d) && shape.gamma != 0)
+            energy += add_local_term<3, 3>(tension, points, gather<3, 3>(x, points), gradient, hessian);
+    }
+    if ((terms & bending_term3d) && shape.kb != 0)
+        for (int e = 0; e < mesh.edge_count(); ++e) {
+            const auto points = edge_points(mesh.edges[e], first);
+            energy += add_local_term<3, 4>(LocalPenalty{dihedral_angle, shape.kb, shape.theta0[e]}, points,
+                                           gather<3, 4>(x, points), gradient, hessian);
+        }
+    return energy;
+}
+
+double mesh_volume(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)
+{
+    double volume = 0;
+    for (const auto& f : mesh.faces)
+        volume += face_volume(gather<3, 3>(x, face_points(f, first)));
+    return volume;
+}
+
+std::vector<double> mesh_face_areas(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)
+{
+    std::vector<double> areas;
+    for (const auto& f : mesh.faces)
+        areas.push_back(triangle_area(gather<3, 3>(x, face_points(f, first))));
+    return areas;
+}
+
+double mesh_surface_area(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)
+{
+    double surface = 0;
+    for (double a : mesh_face_areas(mesh, x, first))
+        surface += a;
+    return surface;
+}
+
+std::vector<double> mesh_bending_angles(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)
+{
+    std::vector<double> angles;
+    for (const auto& e : mesh.edges)
+        angles.push_back(dihedral_angle(gather<3, 4>(x, edge_points(e, first))));
+    return angles;
+}
+
+Eigen::VectorXd mesh_coordinates(const TriangleMesh& mesh)
+{
+    return mesh.vertices.reshaped();
+}
+
+ShapeParameters3d rest_shape_from_mesh(const TriangleMesh& mesh, const Eigen::VectorXd& x, double kv,
+                                       double ka, double kb, double gamma, double area_scale)
+{
+    ShapeParameters3d shape;
+    shape.kv = kv;
+    shape.v0 = mesh_volume(mesh, x, 0);
+    shape.ka = ka;
+    shape.a0 = mesh_face_areas(mesh, x, 0);
+    for (double& a : shape.a0)
+        a *= area_scale;
+    shape.kb = kb;
+    shape.theta0 = mesh_bending_angles(mesh, x, 0);
+    shape.gamma = gamma;
+    return shape;
+}
+
+} // namespace softgrain::dpm

@@ -1,0 +1,194 @@
+#include "dpm/protocols/jam3d.hpp"
+
+#include "core/errors.hpp"
+#include "core/rng.hpp"
+#include "dpm/analysis/modes.hpp"
+#include "dpm/protocols/jam_schedule.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace softgrain::dpm {
+
+FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options)
+{
+    return fire_minimise(
+        x,
+        [&system](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+            f.setZero(y.size());
+            const double energy = total_energy3d(system, y, &f, nullptr);
+            f = -f;
+            return energy;
+        },
+        options);
+}
+
+namespace {
+
+double mean_edge_length(const TriangleMesh& mesh)
+{
+    double sum = 0;
+    for (const MeshEdge& e : mesh.edges)
+        sum += (mesh.vertices.col(e.a) - mesh.vertices.col(e.b)).norm();
+    return sum / mesh.edge_count();
+}
+
+// A rotation from the normalised 4-vector of seeded normal deviates (uniform on SO(3)).
+Eigen::Matrix3d random_rotation(Rng& rng)
+{
+    Eigen::Quaterniond q(rng.normal(1), rng.normal(1), rng.normal(1), rng.normal(1));
+    q.normalize();
+    return q.toRotationMatrix();
+}
+
+// Random centres in the box, each at least R_a + R_b + sigma from the others (minimum image).
+std::vector<Eigen::Vector3d> random_centres(const std::vector<double>& radii, double L, Rng& rng)
+{
+    std::vector<Eigen::Vector3d> centres;
+    for (double r : radii) {
+        for (int tries = 0;; ++tries) {
+            if (tries > 100000)
+                throw InputError("start_fraction: no room for the particles at the random start; lower it");
+            const Eigen::Vector3d c(rng.uniform(0, L), rng.uniform(0, L), rng.uniform(0, L));
+            bool free = true;
+            for (std::size_t q = 0; q < centres.size() && free; ++q) {
+                const Eigen::Vector3d d = c - centres[q];
+                free = (d - L * (d / L).array().round().matrix()).norm() >= r + radii[q] + 1.0;
+            }
+            if (free) {
+                centres.push_back(c);
+                break;
+            }
+        }
+    }
+    return centres;
+}
+
+} // namespace
+
+Jam3dResult jam3d(const Jam3dOptions& options)
+{
+    if (options.particles < 2 || options.particles % 2)
+        throw InputError("particles = " + std::to_string(options.particles) +
+                         ": allowed an even number >= 2");
+    Jam3dResult out;
+    DpmSystem3d& s = out.system;
+    s.kc = 1.0;
+    s.interaction = options.interaction;
+    s.meshes.push_back(mesh_from_name(options.mesh));
+    const TriangleMesh& unit = s.meshes[0]; // vertices on the unit sphere
+
+    // Small particles: mean edge 0.85 sigma; large: size_ratio times in diameter (decision
+    // dpm-3d-jam-packing).
+    const double r_small = 0.85 / mean_edge_length(unit);
+    const Eigen::VectorXd small_x = r_small * mesh_coordinates(unit);
+    const double v0 = mesh_volume(unit, small_x, 0);
+    const double kv = 1.0 / (v0 * v0); // k_v v0^2 = k_c sigma^2
+    out.length_unit = std::cbrt(v0);
+    out.energy_unit = kv * v0 * v0;
+    out.pressure_unit = kv * v0;
+    out.eigenvalue_unit = kv * std::pow(v0, 4.0 / 3.0);
+    Stiffness3d k;
+    k.ka = options.stiffness.ka * kv * std::pow(v0, 2.0 / 3.0);
+    k.kb = options.stiffness.kb * kv * v0 * v0;
+    k.gamma = options.stiffness.gamma * kv * std::pow(v0, 5.0 / 3.0);
+    const auto rest_shape = [&](double r) {
+        const Eigen::VectorXd xr = r * mesh_coordinates(unit);
+        const double A_mesh = mesh_shape_parameter3d(unit, xr, 0);
+        return model_shape3d(options.model, unit, xr,
+                             options.model == ShapeModel::floppy ? options.A0_floppy : A_mesh, kv, k);
+    };
+    const ShapeParameters3d small_shape = rest_shape(r_small),
+                            large_shape = rest_shape(options.size_ratio * r_small);
+
+    std::vector<double> radii;
+    double boxes = 0;
+    for (int m = 0; m < options.particles; ++m) {
+        radii.push_back(m < options.particles / 2 ? r_small : options.size_ratio * r_small);
+        boxes += std::pow(2 * radii.back() + 1.0, 3);
+    }
+    const double L = std::cbrt(boxes / options.start_fraction);
+    s.box = L;
+    Rng rng(options.seed);
+    const std::vector<Eigen::Vector3d> centres = random_centres(radii, L, rng);
+    for (int m = 0; m < options.particles; ++m) {
+        const Eigen::Matrix3Xd v = (radii[m] * random_rotation(rng) * unit.vertices).colwise() + centres[m];
+        s.add_particle(0, v, 1.0, m < options.particles / 2 ? small_shape : large_shape, out.x);
+    }
+
+    // FIRE: time step from the stiffest mode at the start (as in 2D), tolerance 1e-4 P_t (in k_c sigma).
+    FireOptions& fire = out.fire;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(out.x.size(), out.x.size());
+    total_energy3d(s, out.x, nullptr, &h);
+    const double stiffest = std::max(
+        s.kc,
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff());
+    fire.dt_max = std::min(0.5, 0.3 / std::sqrt(stiffest));
+    fire.dt_initial = 0.25 * fire.dt_max;
+    fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
+    fire.max_iterations = options.fire_budget;
+    const auto relax = [&](long step_index) {
+        const FireResult r = relax_fire3d(s, out.x, fire);
+        out.fire_iterations += r.iterations;
+        out.force_evaluations += r.force_evaluations;
+        out.relax_seconds += r.seconds;
+        if (!r.converged)
+            throw NumericalError("relaxation during 3D compression (" + fire_shortfall(r, fire) + ")",
+                                 step_index,
+                                 "force tolerance too small for the pressure; raise pressure_onset or "
+                                 "fire_budget");
+        return r.iterations;
+    };
+    const auto current_pressure = [&] { return pressure3d(stress_tensor3d(s, out.x)) / out.pressure_unit; };
+    relax(0);
+
+    // Saddle test and move: energy amplitudes up to 0.1 sigma (sigma = 1), as in the diagnosis of the
+    // 16 x 42 shell packing (decision dpm-packing-minimum).
+    const std::function<bool()> leave_saddle = [&] {
+        const EnergyWithDerivatives energy = [&s](const Eigen::VectorXd& y, Eigen::VectorXd* gradient,
+                                                  Eigen::MatrixXd* hessian) {
+            return total_energy3d(s, y, gradient, hessian);
+        };
+        return dpm::leave_saddle(energy, out.x, out.pressure_unit, out.eigenvalue_unit,
+                                 options.zero_threshold, 0.1);
+    };
+
+    BoxSchedule schedule;
+    schedule.onset = options.pressure_onset;
+    schedule.jump_step = options.jump_step;
+    Eigen::VectorXd saved_x;
+    double saved_box = L;
+    const CompressiblePacking packing{current_pressure,
+                                      [&](double f) { scale_packing3d(s, out.x, f); },
+                                      relax,
+                                      [&] {
+                                          saved_x = out.x;
+                                          saved_box = *s.box;
+                                      },
+                                      [&] {
+                                          out.x = saved_x;
+                                          *s.box = saved_box;
+                                      },
+                                      leave_saddle};
+    for (double target : pressure_targets(options.pressure_onset, options.pressure_max, options.pressures)) {
+        reach_stable_pressure(target, schedule, packing, options.saddle_escapes, out.saddle_escapes);
+        out.states.push_back({packing_fraction3d(s, out.x), current_pressure(), out.x, *s.box});
+        if (out.states.size() == 1) out.box_steps = schedule.step_index;
+    }
+    out.window_jumps = schedule.jumps;
+    const Jam3dState& onset = out.states.front();
+    out.x = onset.x;
+    *s.box = onset.box;
+    out.phi = onset.phi;
+    out.pressure = onset.pressure;
+    return out;
+}
+
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int matrices)
+{
+    const double vertices = particles * mesh_from_name(mesh).vertex_count();
+    return dense_matrix_memory(3 * vertices, matrices, "3 x particles x mesh vertices");
+}
+
+} // namespace softgrain::dpm

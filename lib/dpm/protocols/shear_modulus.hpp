@@ -1,0 +1,58 @@
+// Shear modulus of a jammed periodic packing, DPM section 9.4.3 (Fig. 9.16a in 2D, 9.16b in 3D): simple shear
+// steps x'_i = x_i + dgamma y_i with Lees-Edwards boundaries (dgamma = 5e-9), an energy minimisation after
+// each, shear stress Sigma~ = -Sigma_xy (eq. 9.26 in 2D, its 3D analogue in system3d.hpp) and
+// G = d Sigma~ / d gamma (least-squares slope over the steps). The minimisation after each step is Newton's
+// method with the pseudo-inverse of the dynamical matrix (polish_newton) from the previous equilibrium: for a
+// step of 5e-9 the quadratic model is exact to O(dgamma^2), so it reaches the minimum FIRE would approach, to
+// round-off (decision dpm-shear-modulus). The procedure is written once, on the three operations it needs
+// from a packing (ShearablePacking); 2D and 3D systems provide them. Units: G and Sigma in the stress unit of
+// the system, [E/L^2] in 2D, [E/L^3] in 3D.
+#pragma once
+
+#include "dpm/analysis/modes.hpp"
+#include "dpm/system/system.hpp"
+#include "dpm/system/system3d.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace softgrain::dpm {
+
+struct ShearModulusResult
+{
+    double modulus = 0;               // G [stress unit]
+    std::vector<double> shear_stress; // -Sigma_xy at gamma = 0, dgamma, 2 dgamma, ...
+    double force_max = 0;             // largest force component after the last minimisation
+    Eigen::VectorXd equilibrium;      // x after the minimisation at gamma = 0 (linear_shear_modulus.hpp)
+};
+
+// What the procedure needs from a periodic packing of any dimension; each operation acts on the packing's own
+// (Lees-Edwards) box, which shear changes.
+struct ShearablePacking
+{
+    EnergyWithDerivatives energy;                         // U(x), adding dU/dx and d^2U/dx^2 when given
+    std::function<void(Eigen::VectorXd&, double)> shear;  // x_i += dgamma y_i; the box strain grows by dgamma
+    std::function<double(const Eigen::VectorXd&)> stress; // Sigma~ = -Sigma_xy (symmetric part)
+};
+
+// Called after each minimisation with the step (0: the polished, unsheared packing), the minimum and Sigma~.
+using ShearStepObserver = std::function<void(int step, const Eigen::VectorXd& x, double shear_stress)>;
+// The same for a system, which carries the box and its Lees-Edwards strain step x dgamma.
+template <class System>
+using ShearedSystemObserver =
+    std::function<void(int step, const System& system, const Eigen::VectorXd& x, double shear_stress)>;
+
+// Applies `steps` strain steps of `dgamma` from x (which must be in equilibrium: it is Newton-polished first,
+// to `force_tolerance`). NumericalError if Newton cannot reach the tolerance after a step.
+ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorXd x, double dgamma, int steps,
+                                 double force_tolerance, const ShearStepObserver& observe = {});
+
+// The same on a copy of a 2D or a 3D system (rough or smooth contacts, any shape model).
+ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
+                                 double force_tolerance,
+                                 const ShearedSystemObserver<DpmSystem>& observe = {});
+ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
+                                 double force_tolerance,
+                                 const ShearedSystemObserver<DpmSystem3d>& observe = {});
+
+} // namespace softgrain::dpm

@@ -1,0 +1,93 @@
+#include "dpm/protocols/shear_modulus_ensemble.hpp"
+
+#include "core/fits.hpp"
+#include "core/output.hpp"
+
+#include <cmath>
+
+namespace softgrain::dpm {
+
+EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
+                                RunContext& context)
+{
+    const std::string& unit = tables.pressure_unit;
+    auto& each =
+        context.table(tables.per_packing, {{"packing", "1", "ensemble member (seed - first seed)"},
+                                           {"P", unit, tables.pressure_meaning},
+                                           {"phi", "1", "packing fraction"},
+                                           {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"},
+                                           {"G_linear", unit, "linear response G_affine - Xi^T H^+ Xi"},
+                                           {"negative_modes", "1", "negative eigenvalues of H"}});
+    EnsembleModulus out;
+    const auto packings = static_cast<double>(members.size());
+    const std::size_t levels = members.front().pressure.size();
+    std::vector<double> mean_p(levels, 0.0), mean_g(levels, 0.0), mean_linear(levels, 0.0);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const ModulusMember& m = members[k];
+        out.fire_iterations += m.fire_iterations;
+        out.force_max = std::max(out.force_max, m.force_max);
+        for (std::size_t l = 0; l < levels; ++l) {
+            each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l], m.modulus_linear[l],
+                      double(m.negative_modes[l])});
+            mean_p[l] += m.pressure[l] / packings;
+            mean_g[l] += m.modulus[l] / packings;
+            mean_linear[l] += m.modulus_linear[l] / packings;
+            if (m.negative_modes[l] > 0) ++out.saddles;
+        }
+    }
+    auto& mean =
+        context.table(tables.mean, {{"P", unit, "ensemble mean pressure"},
+                                    {"G", unit, "ensemble mean shear modulus <G>"},
+                                    {"G_linear", unit, "ensemble mean linear-response shear modulus"}});
+    std::vector<double> fitted_p, fitted_g;
+    for (std::size_t l = 0; l < levels; ++l) {
+        mean.row({mean_p[l], mean_g[l], mean_linear[l]});
+        if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
+            fitted_p.push_back(mean_p[l]);
+            fitted_g.push_back(mean_g[l]);
+        }
+    }
+    std::vector<double> slopes;
+    for (const ModulusMember& m : members) {
+        std::vector<double> p, g;
+        for (std::size_t l = 1; l < levels; ++l)
+            if (m.modulus[l] > 0) p.push_back(m.pressure[l]), g.push_back(m.modulus[l]);
+        if (const auto exponent = fit_power_law_exponent(p, g)) slopes.push_back(*exponent);
+    }
+    out.packings_with_slope = static_cast<int>(slopes.size());
+    if (slopes.size() >= 2) {
+        double mean_slope = 0, var = 0;
+        for (double v : slopes)
+            mean_slope += v / static_cast<double>(slopes.size());
+        for (double v : slopes)
+            var += (v - mean_slope) * (v - mean_slope) / static_cast<double>(slopes.size() - 1);
+        out.eta_spread = std::sqrt(var);
+    }
+    out.G_onset = mean_g.front();
+    out.G_max_pressure = mean_g.back();
+    out.G_linear_onset = mean_linear.front();
+    out.G_linear_max_pressure = mean_linear.back();
+    if (const auto line = fit_power_law(fitted_p, fitted_g)) {
+        out.eta = line->slope;
+        out.eta_error = std::sqrt(line->slope_variance);
+    }
+    return out;
+}
+
+void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, nlohmann::json& s)
+{
+    s["G_onset" + suffix] = e.G_onset;
+    s["G_max_pressure" + suffix] = e.G_max_pressure;
+    s["shear_modulus_exponent" + suffix] = e.eta ? nlohmann::json(*e.eta) : nlohmann::json(nullptr);
+    s["shear_modulus_exponent_error" + suffix] =
+        e.eta_error ? nlohmann::json(*e.eta_error) : nlohmann::json(nullptr);
+    s["force_max" + suffix] = e.force_max;
+    s["shear_modulus_exponent_spread" + suffix] =
+        e.eta_spread ? nlohmann::json(*e.eta_spread) : nlohmann::json(nullptr);
+    s["packings_with_slope" + suffix] = e.packings_with_slope;
+    s["G_linear_onset" + suffix] = e.G_linear_onset;
+    s["G_linear_max_pressure" + suffix] = e.G_linear_max_pressure;
+    s["saddles" + suffix] = e.saddles;
+}
+
+} // namespace softgrain::dpm

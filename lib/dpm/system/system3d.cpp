@@ -1,0 +1,162 @@
+#include "dpm/system/system3d.hpp"
+
+#include "core/errors.hpp"
+#include "core/neighbour_list.hpp"
+#include "dpm/laws/interactions.hpp"
+#include "dpm/laws/interactions3d.hpp"
+#include "dpm/system/scale_packing.hpp"
+#include "dpm/system/system.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace softgrain::dpm {
+
+Eigen::Vector3d DpmSystem3d::image(const Eigen::Vector3d& d) const
+{
+    return box ? lees_edwards_image<3>(d, Eigen::Vector3d::Constant(*box), lees_edwards_strain) : d;
+}
+
+void DpmSystem3d::add_particle(int mesh, const Eigen::Matrix3Xd& v, double sigma,
+                               const ShapeParameters3d& shape, Eigen::VectorXd& x)
+{
+    if (mesh < 0 || mesh >= static_cast<int>(meshes.size()) || v.cols() != meshes[mesh].vertex_count())
+        throw std::logic_error("DpmSystem3d::add_particle: vertices do not match the mesh");
+    Particle3d p;
+    p.first = vertex_count();
+    p.mesh = mesh;
+    p.count = static_cast<int>(v.cols());
+    p.sigma = sigma;
+    p.shape = shape;
+    particles.push_back(p);
+    x.conservativeResize(3 * vertex_count());
+    x.segment(3 * p.first, 3 * p.count) = v.reshaped();
+}
+
+Eigen::Matrix3Xd DpmSystem3d::vertices(const Particle3d& p, const Eigen::VectorXd& x) const
+{
+    return x.segment(3 * p.first, 3 * p.count).reshaped(3, p.count);
+}
+
+namespace {
+
+// Calls contact(i, j, sigma_mb, r_ij) for every vertex pair of different particles closer than sigma_mb
+// (r_ij = minimum image of r_j - r_i), in the order of a cell list over the vertices (cells >= max sigma).
+template <class Contact>
+void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Contact& contact)
+{
+    const int n = s.vertex_count();
+    if (s.particles.size() < 2 || s.kc == 0) return;
+    std::vector<int> owner(n);
+    double largest_sigma = 0;
+    for (std::size_t m = 0; m < s.particles.size(); ++m) {
+        const Particle3d& p = s.particles[m];
+        std::fill(owner.begin() + p.first, owner.begin() + p.first + p.count, static_cast<int>(m));
+        largest_sigma = std::max(largest_sigma, p.sigma);
+    }
+    // Under a Lees-Edwards strain gamma the cell list runs on the coordinates x - gamma y (the shear undone),
+    // whose images form the plain cubic lattice; a pair r apart in space is at most r (1 + |gamma|) apart
+    // there, so the reach grows by that factor. gamma and gamma - 1 give the same images (cube): the one in
+    // [-1/2, 1/2] is used (decision dpm-3d-lees-edwards).
+    const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain),
+                 reach = largest_sigma * (1 + std::abs(gamma));
+    // A vertex pair has one image within reach only if L > 2 reach (decision dpm-3d-vertex-image).
+    if (s.box && *s.box <= 2 * reach)
+        throw NumericalError(
+            "periodic box side " + std::to_string(*s.box) + " not above twice the vertex diameter " +
+                std::to_string(largest_sigma) + " times 1 + |Lees-Edwards strain|",
+            0, "the packing is compressed beyond the minimum-image range; lower the pressure");
+    std::optional<Vec<3>> periodic;
+    if (s.box) periodic = Vec<3>::Constant(*s.box);
+    NeighbourList<3> list(reach, 0.0, periodic);
+    if (gamma == 0) {
+        list.update(x.reshaped(3, n));
+    } else {
+        Eigen::Matrix3Xd unsheared = x.reshaped(3, n);
+        unsheared.row(0) -= gamma * unsheared.row(1);
+        list.update(unsheared);
+    }
+    for (const auto& [i, j] : list.pairs()) {
+        if (owner[i] == owner[j]) continue;
+        const double sigma = 0.5 * (s.particles[owner[i]].sigma + s.particles[owner[j]].sigma);
+        const Eigen::Vector3d rij = s.image(x.segment<3>(3 * j) - x.segment<3>(3 * i));
+        if (rij.squaredNorm() < sigma * sigma) contact(i, j, sigma, rij); // Theta(sigma_mb - r), eq. (9.4)
+    }
+}
+
+} // namespace
+
+double interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                            HessianSink hessian, Eigen::Matrix3d* virial)
+{
+    if (s.interaction == InteractionKind::none) return 0;
+    if (s.interaction == InteractionKind::smooth)
+        return smooth_interaction_energy3d(s, x, gradient, hessian, virial);
+    double energy = 0;
+    for_each_contact(s, x, [&](int i, int j, double sigma, const Eigen::Vector3d& rij) {
+        const std::array<int, 2> pair{i, j};
+        Eigen::Matrix<double, 6, 1> local;
+        local << x.segment<3>(3 * i), x.segment<3>(3 * i) + rij; // j at its image nearest to i
+        energy += add_local_term<3, 2>(VertexSpring<3>{s.kc, sigma}, pair, local, gradient, hessian, virial);
+    });
+    return energy;
+}
+
+std::vector<int> contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    if (s.interaction == InteractionKind::smooth) return smooth_contact_counts3d(s, x);
+    std::vector<int> owner(s.vertex_count());
+    for (std::size_t m = 0; m < s.particles.size(); ++m)
+        std::fill(owner.begin() + s.particles[m].first,
+                  owner.begin() + s.particles[m].first + s.particles[m].count, static_cast<int>(m));
+    std::vector<int> counts(s.particles.size(), 0);
+    for_each_contact(s, x, [&](int i, int j, double, const Eigen::Vector3d&) {
+        ++counts[owner[i]];
+        ++counts[owner[j]];
+    });
+    return counts;
+}
+
+double total_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                      HessianSink hessian)
+{
+    double energy = 0;
+    for (const Particle3d& p : s.particles)
+        energy += shape_energy3d(p.shape, s.meshes[p.mesh], x, p.first, gradient, hessian);
+    return energy + interaction_energy3d(s, x, gradient, hessian);
+}
+
+Eigen::Matrix3d stress_tensor3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    if (!s.box) throw InputError("stress tensor: the system has no periodic box");
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+    // Shape part: sum_i r_i F_i^T per particle at its unwrapped vertices (translation invariant).
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    for (const Particle3d& p : s.particles)
+        shape_energy3d(p.shape, s.meshes[p.mesh], x, p.first, &g, nullptr);
+    const int n = s.vertex_count();
+    moment -= x.reshaped(3, n) * g.reshaped(3, n).transpose();
+    interaction_energy3d(s, x, nullptr, nullptr, &moment);
+    return moment / std::pow(*s.box, 3);
+}
+
+void shear_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double dgamma)
+{
+    shear_vertices<3>(s, x, dgamma);
+}
+
+void scale_packing3d(DpmSystem3d& s, Eigen::VectorXd& x, double f)
+{
+    scale_particle_centres<3>(s, x, f);
+}
+
+double packing_fraction3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    double volume = 0;
+    for (const Particle3d& p : s.particles)
+        volume += mesh_volume(s.meshes[p.mesh], x, p.first);
+    return volume / std::pow(*s.box, 3);
+}
+
+} // namespace softgrain::dpm
