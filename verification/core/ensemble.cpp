@@ -1,7 +1,7 @@
 // Ensembles (core/ensemble.hpp) in one process, as the verification binary runs (no MPI launcher): every
 // member in order k, the first failure in member order, failures mapped to the command line's exit codes,
 // and a context that discards its output writing nothing (the MPI ranks other than the first). Several
-// ranks are tested through the program itself: verification/dpm/ensemble_mpi.py.
+// ranks are tested through the program itself: verification/dpm/protocols/ensemble_mpi.py.
 #include "core/ensemble.hpp"
 #include "core/errors.hpp"
 #include "core/output.hpp"

@@ -17,7 +17,8 @@ Eigen::Vector2d point(const Eigen::VectorXd& x, int v)
 
 // The spring k/2 (sigma - r)^2 between vertices i and j at local positions r_i and r_j (j's image), adding
 // its derivatives. The gradient alone (FIRE) is analytic: dU/dr_j = -k (sigma - r) (r_j - r_i)/r = -dU/dr_i
-// (verification/dpm/contact_list.cpp checks it against AutoDiff); Hessians and virials come from AutoDiff.
+// (verification/dpm/system/contact_list.cpp checks it against AutoDiff); Hessians and virials come from
+// AutoDiff.
 double add_vertex_spring(const VertexSpringEnergy& spring, int i, int j, const Eigen::Vector2d& ri,
                          const Eigen::Vector2d& rj, Eigen::VectorXd* gradient, HessianSink hessian,
                          Eigen::Matrix2d* virial)

@@ -70,7 +70,8 @@ struct LocalGradient
 
 // Analytic first derivatives of the three measures above, for the gradient-only path (FIRE): the AutoDiff
 // gradient of the same measures costs several times more (decision dpm-2d-analytic-gradient); the Hessian
-// keeps AutoDiff. Verified against the AutoDiff gradients to round-off (verification/dpm/shape_energy.cpp).
+// keeps AutoDiff. Verified against the AutoDiff gradients to round-off
+// (verification/dpm/laws/shape_energy.cpp).
 //   grad edge_length: d l/d r1 = (r1 - r0)/l = -d l/d r0; undefined at l = 0;
 //   grad shoelace_term = (y1, -x1, -y0, x0)/2;
 //   grad turning_angle: theta = phi(o) - phi(i) (mod 2 pi) with phi(e) the polar angle of an edge

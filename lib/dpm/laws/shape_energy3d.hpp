@@ -68,7 +68,7 @@ inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scal
 // Analytic first derivatives of the three local measures above, for the gradient-only path (FIRE): the
 // AutoDiff gradient of the same measures costs several times more (decision dpm-3d-analytic-gradient);
 // the Hessian keeps AutoDiff. Verified against the AutoDiff gradients to round-off and against finite
-// differences (verification/dpm/shape_energy3d.cpp).
+// differences (verification/dpm/laws/shape_energy3d.cpp).
 //   grad face_volume  = (r1 x r2, r2 x r0, r0 x r1)/6;
 //   grad triangle_area: with the unit normal m = n/|n|,
 //     d a/d r1 = (r2 - r0) x m/2, d a/d r2 = m x (r1 - r0)/2,

@@ -10,9 +10,9 @@
 // fire_seconds (their FIRE part), fire_iterations, force_evaluations (energy and gradient evaluations of the
 // FIRE runs: one per FIRE iteration and one at the start of each), force_evaluations_per_second and
 // vertex_force_evaluations_per_second (over fire_seconds: FIRE's rate), newton_handovers, newton_steps and
-// newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp; 0 with FIRE
-// alone and in 3D), spectrum_seconds, degrees_of_freedom; the run's peak memory is peak_memory_mib. Costs are measured, never asserted (verification/dpm/bench.cpp checks
-// that the keys agree with each other).
+// newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp; 0 with FIRE alone
+// and in 3D), spectrum_seconds, degrees_of_freedom; the run's peak memory is peak_memory_mib. Costs are
+// measured, never asserted (verification/dpm/protocols/bench.cpp checks that the keys agree with each other).
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/errors.hpp"

@@ -73,7 +73,7 @@ double total_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen
 // Stress tensor of a static periodic packing, the 3D analogue of eq. (9.26):
 //   Sigma_ab = (1/L^3) [ sum_mu sum_i r_{mu i,a} F^shape_{mu i,b} - sum_{contacts} r_{ij,a} F_{ij,b} ],
 // positive in compression; pressure P = Tr(Sigma)/3 [E/L^3]. Equal to -dU/dV under a homogeneous dilation
-// of every coordinate and the box (verification/dpm/system3d.cpp).
+// of every coordinate and the box (verification/dpm/protocols/jamming3d.cpp).
 Eigen::Matrix3d stress_tensor3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 inline double pressure3d(const Eigen::Matrix3d& stress)
 {

@@ -1,7 +1,7 @@
 // DPM Fig. 9.5(c, d): a mode of a packing of deformable particles split per particle into rigid translation,
-// rigid rotation and deformation (dpm/modes.hpp decompose_mode). Fields built from known parts must come
-// back with exactly their shares (2D, and 3D as used for the softest mode of Fig. 9.15d-f). The quartic-mode
-// test of Fig. 9.14(c) is in mode_energy.cpp.
+// rigid rotation and deformation (dpm/analysis/modes.hpp decompose_mode). Fields built from known parts must
+// come back with exactly their shares (2D, and 3D as used for the softest mode of Fig. 9.15d-f). The
+// quartic-mode test of Fig. 9.14(c) is in mode_energy.cpp.
 #include "dpm/analysis/modes.hpp"
 #include "dpm/system/mesh3d.hpp"
 #include "support/tolerance.hpp"

@@ -1,9 +1,9 @@
-// DPM Fig. 9.18: the reductions dpm.boundary_jam reports over its jammed packings (dpm/boundary_jam.hpp),
-// on hand-made lists of parallelogram angles theta [deg] (NaN: a packing without a 4-cycle of contacts) whose
-// answers are known: the distinct packings (decision dpm-boundary-jam: same contact number and theta within
-// 1 degree of a neighbour, single linkage), the largest gap of theta over its range (Fig. 9.18f) and the range
-// of theta over the packings with a 4-cycle. Counts and extremes are exact; the gap is one division of exact
-// differences of small integers and halves, exact too.
+// DPM Fig. 9.18: the reductions dpm.boundary_jam reports over its jammed packings
+// (dpm/protocols/boundary_jam.hpp), on hand-made lists of parallelogram angles theta [deg] (NaN: a packing
+// without a 4-cycle of contacts) whose answers are known: the distinct packings (decision dpm-boundary-jam:
+// same contact number and theta within 1 degree of a neighbour, single linkage), the largest gap of theta
+// over its range (Fig. 9.18f) and the range of theta over the packings with a 4-cycle. Counts and extremes
+// are exact; the gap is one division of exact differences of small integers and halves, exact too.
 #include "dpm/protocols/boundary_jam.hpp"
 #include "support/tolerance.hpp"
 

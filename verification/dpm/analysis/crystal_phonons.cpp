@@ -1,5 +1,5 @@
 // DPM eq. (9.28), Fig. 9.5(a): the dynamical matrix of a compressed triangular (hexagonal) crystal of soft
-// disks against the exact phonon spectrum of the lattice (dpm/crystal.hpp): all 2 n^2 eigenvalues.
+// disks against the exact phonon spectrum of the lattice (dpm/system/crystal.hpp): all 2 n^2 eigenvalues.
 #include "dpm/analysis/modes.hpp"
 #include "dpm/system/crystal.hpp"
 #include "support/tolerance.hpp"

@@ -1,11 +1,11 @@
-// The vertex-level Verlet list of 2D DPM contacts (dpm/contact_list.hpp), against an independent brute-force
-// reference that visits every vertex pair of every particle pair through the particle pair's nearest image
-// (the traversal the list replaced, kept here only): energy, gradient (the analytic FIRE path and the
-// AutoDiff one), Hessian and virial of eqs. (9.4)-(9.9) agree to round-off on random overlapping periodic
-// configurations, in open space, under Lees-Edwards strains where the image shift matters (gamma = 0.3,
-// 1.2), rough and smooth. The list is rebuilt exactly when a vertex has moved beyond half the skin (or the
-// box, the strain or the particles change); a contact formed by smaller motions is found without a rebuild,
-// and the results do not depend on when the list was built.
+// The vertex-level Verlet list of 2D DPM contacts (dpm/system/contact_list.hpp), against an independent
+// brute-force reference that visits every vertex pair of every particle pair through the particle pair's
+// nearest image (the traversal the list replaced, kept here only): energy, gradient (the analytic FIRE path
+// and the AutoDiff one), Hessian and virial of eqs. (9.4)-(9.9) agree to round-off on random overlapping
+// periodic configurations, in open space, under Lees-Edwards strains where the image shift matters (gamma =
+// 0.3, 1.2), rough and smooth. The list is rebuilt exactly when a vertex has moved beyond half the skin (or
+// the box, the strain or the particles change); a contact formed by smaller motions is found without a
+// rebuild, and the results do not depend on when the list was built.
 //
 // Tolerance of the comparison with the reference: 1e-12 relative to the largest entry (energy: to its
 // value). Both sum the same terms, in another order and with the image translation applied in another way

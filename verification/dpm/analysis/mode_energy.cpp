@@ -1,9 +1,9 @@
 // DPM sec. 9.4.3, Figs. 9.14(a, c), 9.15(c): the energy change Delta U(dr) along the modes of a spectrum
-// (dpm/mode_energy.hpp mode_energies) on energies whose answer is known in closed form. Along an eigenvector
-// of a quadratic energy Delta U = lambda dr^2 / 2 at every amplitude and the local exponent is 2; along a
-// quartic direction the exponent is 4; the quartic criterion (Delta U(0.1) > 3 lambda 0.1^2/2) tells the two
-// apart. Tolerances are round-off: each Delta U is a handful of floating-point operations on numbers of size
-// lambda dr^2 (the energy at the minimum is 0, so Delta U has no cancellation).
+// (dpm/analysis/mode_energy.hpp mode_energies) on energies whose answer is known in closed form. Along an
+// eigenvector of a quadratic energy Delta U = lambda dr^2 / 2 at every amplitude and the local exponent is 2;
+// along a quartic direction the exponent is 4; the quartic criterion (Delta U(0.1) > 3 lambda 0.1^2/2) tells
+// the two apart. Tolerances are round-off: each Delta U is a handful of floating-point operations on numbers
+// of size lambda dr^2 (the energy at the minimum is 0, so Delta U has no cancellation).
 #include "dpm/analysis/mode_energy.hpp"
 #include "support/tolerance.hpp"
 
