@@ -57,37 +57,6 @@ double shape_energy_with_gradient(const ShapeParameters& shape, const Eigen::Vec
 
 } // namespace
 
-LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x)
-{
-    const Eigen::Vector2d r = x.segment<2>(2) - x.segment<2>(0);
-    LocalGradient<4> d;
-    d.value = edge_length(x);
-    const Eigen::Vector2d unit = r / d.value;
-    d.gradient << -unit, unit;
-    return d;
-}
-
-LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x)
-{
-    LocalGradient<4> d;
-    d.value = shoelace_term(x);
-    d.gradient << 0.5 * x(3), -0.5 * x(2), -0.5 * x(1), 0.5 * x(0);
-    return d;
-}
-
-LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x)
-{
-    const Eigen::Vector2d incoming = x.segment<2>(2) - x.segment<2>(0);
-    const Eigen::Vector2d outgoing = x.segment<2>(4) - x.segment<2>(2);
-    // d phi/d e = (-e_y, e_x)/|e|^2 for the polar angle phi of an edge e.
-    const Eigen::Vector2d g0 = Eigen::Vector2d(-incoming.y(), incoming.x()) / incoming.squaredNorm();
-    const Eigen::Vector2d g2 = Eigen::Vector2d(-outgoing.y(), outgoing.x()) / outgoing.squaredNorm();
-    LocalGradient<6> d;
-    d.value = turning_angle(x);
-    d.gradient << g0, -(g0 + g2), g2;
-    return d;
-}
-
 double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
                     Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {

@@ -79,9 +79,38 @@ struct LocalGradient
 //     edge o = r2 - r1: d theta/d r0 = (-i_y, i_x)/|i|^2, d theta/d r2 = (-o_y, o_x)/|o|^2,
 //     d theta/d r1 = -(d theta/d r0 + d theta/d r2) (translation invariance); undefined where an edge
 //     has length 0.
-LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x);
-LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x);
-LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x);
+// Inline: they run at every vertex of every FIRE force evaluation, and a call returning the struct through
+// memory costs more than the arithmetic.
+inline LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    const Eigen::Vector2d r = x.segment<2>(2) - x.segment<2>(0);
+    LocalGradient<4> d;
+    d.value = edge_length(x);
+    const Eigen::Vector2d unit = r / d.value;
+    d.gradient << -unit, unit;
+    return d;
+}
+
+inline LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x)
+{
+    LocalGradient<4> d;
+    d.value = shoelace_term(x);
+    d.gradient << 0.5 * x(3), -0.5 * x(2), -0.5 * x(1), 0.5 * x(0);
+    return d;
+}
+
+inline LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x)
+{
+    const Eigen::Vector2d incoming = x.segment<2>(2) - x.segment<2>(0);
+    const Eigen::Vector2d outgoing = x.segment<2>(4) - x.segment<2>(2);
+    // d phi/d e = (-e_y, e_x)/|e|^2 for the polar angle phi of an edge e.
+    const Eigen::Vector2d g0 = Eigen::Vector2d(-incoming.y(), incoming.x()) / incoming.squaredNorm();
+    const Eigen::Vector2d g2 = Eigen::Vector2d(-outgoing.y(), outgoing.x()) / outgoing.squaredNorm();
+    LocalGradient<6> d;
+    d.value = turning_angle(x);
+    d.gradient << g0, -(g0 + g2), g2;
+    return d;
+}
 
 // The two forms a local measure q enters eqs. (9.1) and (9.2) in, as local terms (local_derivatives.hpp):
 // the penalty k/2 (q - q0)^2 (edge length and turning angle in 2D; face area and dihedral angle in 3D)

@@ -147,8 +147,13 @@ bool ContactList::same_layout(const DpmSystem& system) const
 bool ContactList::valid_for(const DpmSystem& system, const Eigen::VectorXd& x) const
 {
     if (!same_layout(system)) return false;
+    // A plain loop over the vertices, stopping at the first that moved too far: this test runs at every
+    // force evaluation, and a reshaped expression costs an integer division per coordinate.
+    const double limit = 0.25 * skin() * skin();
     const auto n = static_cast<Eigen::Index>(owner_.size());
-    return (x - built_at_).reshaped(2, n).colwise().squaredNorm().maxCoeff() <= 0.25 * skin() * skin();
+    for (Eigen::Index v = 0; v < n; ++v)
+        if ((x.segment<2>(2 * v) - built_at_.segment<2>(2 * v)).squaredNorm() > limit) return false;
+    return true;
 }
 
 std::shared_ptr<const ContactList> ContactCache::list(const DpmSystem& system, const Eigen::VectorXd& x) const
