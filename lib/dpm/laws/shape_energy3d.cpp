@@ -45,40 +45,6 @@ double shape_energy_with_gradient3d(const ShapeParameters3d& shape, const Triang
 
 } // namespace
 
-LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x)
-{
-    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
-    LocalGradient<9> d;
-    d.value = face_volume(x);
-    d.gradient << r1.cross(r2) / 6.0, r2.cross(r0) / 6.0, r0.cross(r1) / 6.0;
-    return d;
-}
-
-LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x)
-{
-    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
-    const Eigen::Vector3d m = (r1 - r0).cross(r2 - r0).normalized();
-    const Eigen::Vector3d g1 = 0.5 * (r2 - r0).cross(m), g2 = 0.5 * m.cross(r1 - r0);
-    LocalGradient<9> d;
-    d.value = triangle_area(x);
-    d.gradient << -(g1 + g2), g1, g2;
-    return d;
-}
-
-LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x)
-{
-    const Eigen::Vector3d a = x.segment<3>(0), b = x.segment<3>(3), c = x.segment<3>(6), dd = x.segment<3>(9);
-    const Eigen::Vector3d e = b - a;
-    const Eigen::Vector3d n1 = e.cross(c - a), n2 = (a - b).cross(dd - b);
-    const double e2 = e.squaredNorm(), length = std::sqrt(e2);
-    const Eigen::Vector3d gc = -length / n1.squaredNorm() * n1, gd = -length / n2.squaredNorm() * n2;
-    const Eigen::Vector3d gb = -((c - a).dot(e) / e2 * gc + (dd - a).dot(e) / e2 * gd);
-    LocalGradient<12> d;
-    d.value = dihedral_angle(x);
-    d.gradient << -(gb + gc + gd), gb, gc, gd;
-    return d;
-}
-
 double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
                       int first, Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {

@@ -78,9 +78,40 @@ inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scal
 //     normal flattens a convex edge); the edge points carry the rest according to where c and d project on
 //     the edge, with t_c = (c - a) . e/|e|^2: d theta/d b = -(t_c d theta/d c + t_d d theta/d d),
 //     d theta/d a = -(d theta/d b + d theta/d c + d theta/d d); undefined for a degenerate face.
-LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x);
-LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x);
-LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x);
+// Inline, as in 2D: they run at every face and edge of every FIRE force evaluation.
+inline LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x)
+{
+    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
+    LocalGradient<9> d;
+    d.value = face_volume(x);
+    d.gradient << r1.cross(r2) / 6.0, r2.cross(r0) / 6.0, r0.cross(r1) / 6.0;
+    return d;
+}
+
+inline LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x)
+{
+    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
+    const Eigen::Vector3d m = (r1 - r0).cross(r2 - r0).normalized();
+    const Eigen::Vector3d g1 = 0.5 * (r2 - r0).cross(m), g2 = 0.5 * m.cross(r1 - r0);
+    LocalGradient<9> d;
+    d.value = triangle_area(x);
+    d.gradient << -(g1 + g2), g1, g2;
+    return d;
+}
+
+inline LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x)
+{
+    const Eigen::Vector3d a = x.segment<3>(0), b = x.segment<3>(3), c = x.segment<3>(6), dd = x.segment<3>(9);
+    const Eigen::Vector3d e = b - a;
+    const Eigen::Vector3d n1 = e.cross(c - a), n2 = (a - b).cross(dd - b);
+    const double e2 = e.squaredNorm(), length = std::sqrt(e2);
+    const Eigen::Vector3d gc = -length / n1.squaredNorm() * n1, gd = -length / n2.squaredNorm() * n2;
+    const Eigen::Vector3d gb = -((c - a).dot(e) / e2 * gc + (dd - a).dot(e) / e2 * gd);
+    LocalGradient<12> d;
+    d.value = dihedral_angle(x);
+    d.gradient << -(gb + gc + gd), gb, gc, gd;
+    return d;
+}
 
 // Parameters of eq. (9.2) for one particle: per-face rest areas and per-edge rest angles (in the order of
 // the mesh's faces and edges), since on a geodesic mesh they are not uniform (section 9.3.1).

@@ -156,17 +156,6 @@ bool ContactList::valid_for(const DpmSystem& system, const Eigen::VectorXd& x) c
     return true;
 }
 
-std::shared_ptr<const ContactList> ContactCache::list(const DpmSystem& system, const Eigen::VectorXd& x) const
-{
-    std::shared_ptr<const ContactList> cached = current();
-    if (cached && cached->valid_for(system, x)) return cached;
-    auto fresh = std::make_shared<const ContactList>(system, x);
-    const std::lock_guard lock(mutex_);
-    list_ = fresh;
-    ++builds_;
-    return fresh;
-}
-
 std::vector<VertexContact> vertex_contacts(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     std::vector<VertexContact> contacts;

@@ -18,10 +18,10 @@
 #pragma once
 
 #include "core/neighbour_list.hpp"
+#include "dpm/system/list_cache.hpp"
 
 #include <Eigen/Core>
 #include <memory>
-#include <mutex>
 #include <span>
 #include <vector>
 
@@ -93,50 +93,8 @@ class ContactList
     Eigen::VectorXd built_at_;
 };
 
-// The contact list of a system, kept between energy evaluations.
-//
-// Why in the system: every energy, force, Hessian, stress and contact count is a function of
-// (const DpmSystem&, x), called from relaxations, mode analyses, finite differences and scenes alike; the
-// list is a cache of their pair search, not physics state, and the results do not depend on it (see
-// above). So it lives in the system as a mutable cache rather than as a parameter threaded through every
-// caller. Thread safety: a built list is immutable and shared (copies of a system share it until one needs
-// a new list); the mutex guards only the swap, so concurrent evaluations of one system are safe (each
-// keeps the list it got for the whole evaluation).
-class ContactCache
-{
-  public:
-    ContactCache() = default;
-    ContactCache(const ContactCache& other) : list_(other.current()) {}
-    ContactCache& operator=(const ContactCache& other)
-    {
-        if (this != &other) {
-            std::shared_ptr<const ContactList> list = other.current();
-            const std::lock_guard lock(mutex_);
-            list_ = std::move(list);
-        }
-        return *this;
-    }
-
-    // The list valid at x, rebuilt if the cached one is not.
-    std::shared_ptr<const ContactList> list(const DpmSystem& system, const Eigen::VectorXd& x) const;
-    // How many lists this cache object has built (a copy starts from 0): for tests of the rebuild rule.
-    long builds() const
-    {
-        const std::lock_guard lock(mutex_);
-        return builds_;
-    }
-
-  private:
-    std::shared_ptr<const ContactList> current() const
-    {
-        const std::lock_guard lock(mutex_);
-        return list_;
-    }
-
-    mutable std::mutex mutex_;
-    mutable std::shared_ptr<const ContactList> list_;
-    mutable long builds_ = 0;
-};
+// The contact list of a 2D system, kept between energy evaluations (list_cache.hpp).
+using ContactCache = ListCache<ContactList, DpmSystem>;
 
 // A touching vertex pair (i < j, of particles a != b): r = r_j - r_i by the nearest image, r < sigma_mb.
 struct VertexContact

@@ -42,46 +42,16 @@ Eigen::Matrix3Xd DpmSystem3d::vertices(const Particle3d& p, const Eigen::VectorX
 namespace {
 
 // Calls contact(i, j, sigma_mb, r_ij) for every vertex pair of different particles closer than sigma_mb
-// (r_ij = minimum image of r_j - r_i), in the order of a cell list over the vertices (cells >= max sigma).
+// (r_ij = minimum image of r_j - r_i), in (i, j) order, from the system's Verlet list (vertex_pairs3d.hpp).
 template <class Contact>
 void for_each_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Contact& contact)
 {
-    const int n = s.vertex_count();
     if (s.particles.size() < 2 || s.kc == 0) return;
-    std::vector<int> owner(n);
-    double largest_sigma = 0;
-    for (std::size_t m = 0; m < s.particles.size(); ++m) {
-        const Particle3d& p = s.particles[m];
-        std::fill(owner.begin() + p.first, owner.begin() + p.first + p.count, static_cast<int>(m));
-        largest_sigma = std::max(largest_sigma, p.sigma);
-    }
-    // Under a Lees-Edwards strain gamma the cell list runs on the coordinates x - gamma y (the shear undone),
-    // whose images form the plain cubic lattice; a pair r apart in space is at most r (1 + |gamma|) apart
-    // there, so the reach grows by that factor. gamma and gamma - 1 give the same images (cube): the one in
-    // [-1/2, 1/2] is used (decision dpm-3d-lees-edwards).
-    const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain),
-                 reach = largest_sigma * (1 + std::abs(gamma));
-    // A vertex pair has one image within reach only if L > 2 reach (decision dpm-3d-vertex-image).
-    if (s.box && *s.box <= 2 * reach)
-        throw NumericalError(
-            "periodic box side " + std::to_string(*s.box) + " not above twice the vertex diameter " +
-                std::to_string(largest_sigma) + " times 1 + |Lees-Edwards strain|",
-            0, "the packing is compressed beyond the minimum-image range; lower the pressure");
-    std::optional<Vec<3>> periodic;
-    if (s.box) periodic = Vec<3>::Constant(*s.box);
-    NeighbourList<3> list(reach, 0.0, periodic);
-    if (gamma == 0) {
-        list.update(x.reshaped(3, n));
-    } else {
-        Eigen::Matrix3Xd unsheared = x.reshaped(3, n);
-        unsheared.row(0) -= gamma * unsheared.row(1);
-        list.update(unsheared);
-    }
-    for (const auto& [i, j] : list.pairs()) {
-        if (owner[i] == owner[j]) continue;
-        const double sigma = 0.5 * (s.particles[owner[i]].sigma + s.particles[owner[j]].sigma);
-        const Eigen::Vector3d rij = s.image(x.segment<3>(3 * j) - x.segment<3>(3 * i));
-        if (rij.squaredNorm() < sigma * sigma) contact(i, j, sigma, rij); // Theta(sigma_mb - r), eq. (9.4)
+    const std::shared_ptr<const VertexPairList3d> list = s.contacts.list(s, x);
+    for (const CandidatePair3d& pair : list->pairs()) {
+        const Eigen::Vector3d rij = s.image(x.segment<3>(3 * pair.j) - x.segment<3>(3 * pair.i));
+        if (rij.squaredNorm() < pair.sigma * pair.sigma)
+            contact(pair.i, pair.j, pair.sigma, rij); // Theta(sigma_mb - r), eq. (9.4)
     }
 }
 

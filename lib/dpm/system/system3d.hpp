@@ -20,6 +20,7 @@
 #include "dpm/laws/shape_energy3d.hpp"
 #include "dpm/system/mesh3d.hpp"
 #include "dpm/system/system.hpp"
+#include "dpm/system/vertex_pairs3d.hpp"
 
 #include <optional>
 #include <vector>
@@ -46,6 +47,9 @@ struct DpmSystem3d
     double lees_edwards_strain = 0;
     // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
     InteractionKind interaction = InteractionKind::rough;
+    // The vertex-level Verlet list of the rough interaction (vertex_pairs3d.hpp): a cache kept between
+    // evaluations (list_cache.hpp), which every rough contact loop traverses.
+    ListCache<VertexPairList3d, DpmSystem3d> contacts;
 
     int vertex_count() const
     {
