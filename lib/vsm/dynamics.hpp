@@ -20,7 +20,8 @@ struct LeapfrogState
 };
 
 // Whether the integrator refuses a time step above the predicted stability limit (vsm/stability.hpp) before
-// the first step. `off` is for stability studies only: an unstable run then ends with J <= 0 (exit 3).
+// the first step. `off` is for stability studies only: an unstable run then ends with J <= 0 (exit 3), or,
+// in the swinging cube, when its displacement leaves the energy bound of a stable run (exit 3).
 enum class TimeStepCheck { refuse_above_limit, off };
 
 class Leapfrog

@@ -1,5 +1,6 @@
 #include "vsm/swinging_cube.hpp"
 
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "vsm/dynamics.hpp"
 #include "vsm/particle_layouts.hpp"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 namespace softgrain::vsm {
 
@@ -84,6 +86,42 @@ SwingingCubeError measure_error(const SwingingCube& cube, const Points<3>& X, co
     return e;
 }
 
+// The bound on the displacement of a stable run (decision swinging-blow-up). Without damping the leapfrog run
+// conserves energy, and the swinging mode of eq. (53) is the cube's lowest (every mode of these walls has all
+// three wave numbers >= pi/(2L), the swinging mode exactly these, and shear is slower than compression), so
+// the mass-weighted displacement norm stays at most sqrt(phi^T K phi / phi^T M phi) / omega_min times its
+// initial value, near 1. An instability grows past any such bound; near incompressibility the neo-Hookean law
+// can saturate it before any J <= 0 (nu = 0.499 at 1.4 times the predicted step: 8 times the amplitude, and
+// the run completed). 2 leaves a factor 4 for the sampled mode's Rayleigh quotient above omega_min^2.
+constexpr double stable_displacement_bound = 2.0;
+
+// sqrt(sum_a m_a |x_a - X_a|^2) [kg^1/2 m].
+double mass_weighted_displacement(const std::vector<double>& mass, const Points<3>& X, const Points<3>& x)
+{
+    double sum = 0;
+    for (Eigen::Index a = 0; a < X.cols(); ++a)
+        sum += mass[static_cast<std::size_t>(a)] * (x.col(a) - X.col(a)).squaredNorm();
+    return std::sqrt(sum);
+}
+
+// Stops an unstable run (exit 3) once its displacement exceeds the bound of a stable one, naming dt and the
+// predicted limit.
+void check_bounded_displacement(const Model& model, const Points<3>& X, double initial_displacement,
+                                const Leapfrog& integrator)
+{
+    const double ratio =
+        mass_weighted_displacement(model.mass(), X, integrator.positions()) / initial_displacement;
+    if (ratio <= stable_displacement_bound) return;
+    const double limit = predicted_time_step_limit(model);
+    std::ostringstream m;
+    m << "displacement " << ratio << " times its initial amplitude (bound " << stable_displacement_bound
+      << " for a stable run, which conserves energy) at t = " << integrator.state().t
+      << " s; time step dt = " << integrator.dt() << " s = " << integrator.dt() / limit
+      << " times the predicted limit " << limit << " s";
+    throw NumericalError(m.str(), integrator.state().step,
+                         "time step above the stability limit (leapfrog instability): reduce cfl");
+}
+
 } // namespace
 
 Points<3> swinging_cube_particles(const SwingingCubeSetup& setup)
@@ -140,8 +178,10 @@ SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
     const long stride = samples > 0 ? std::max(1L, steps / samples) : 0;
     if (observe) observe(measure_error(setup.cube, X, x0, 0.0, spacing));
     if (on_step) on_step(model, integrator);
+    const double initial_displacement = mass_weighted_displacement(model.mass(), X, x0);
     for (long k = 1; k <= steps; ++k) {
         integrator.step();
+        check_bounded_displacement(model, X, initial_displacement, integrator);
         if (on_step) on_step(model, integrator);
         if (observe && stride > 0 && (k % stride == 0 || k == steps))
             observe(measure_error(setup.cube, X, integrator.positions(), integrator.state().t, spacing));

@@ -75,7 +75,9 @@ Points<3> swinging_cube_particles(const SwingingCubeSetup& setup);
 Model swinging_cube_model(const SwingingCubeSetup& setup, const Points<3>& X);
 
 // Runs the cube to end_time; observe(error) is called at `samples` evenly spaced steps (and at t = 0) when
-// given, for error histories; on_step, if given, sees the start and every time step.
+// given, for error histories; on_step, if given, sees the start and every time step. Throws NumericalError
+// (exit 3) when the displacement leaves the energy bound of a stable run: a leapfrog instability that the
+// neo-Hookean law saturates before any J <= 0 (decision swinging-blow-up).
 SwingingCubeResult run_swinging_cube(const SwingingCubeSetup& setup,
                                      const std::function<void(const SwingingCubeError&)>& observe = {},
                                      int samples = 0, const StepObserver& on_step = {});

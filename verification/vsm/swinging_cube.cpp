@@ -1,7 +1,9 @@
 // Swinging cube (Frenning 2022, section 6.2, eq. (53), Fig. 5): the analytic solution and the convergence
 // order.
 #include "vsm/swinging_cube.hpp"
+#include "core/errors.hpp"
 #include "support/tolerance.hpp"
+#include "vsm/stability.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -91,4 +93,25 @@ TEST_CASE("swinging cube error is that of the linear regime: independent of the 
     s.cube.amplitude *= 0.1;
     const double small = run_swinging_cube(s).displacement_error_l2;
     CHECK_CLOSE(small, full, (Tolerance{1e-2, 0}));
+}
+
+TEST_CASE("an unstable swinging cube stops with a diagnosis, never a silent blow-up [VSM section 5]")
+{
+    // Near incompressibility the neo-Hookean law saturates a leapfrog instability before any J <= 0: at nu =
+    // 0.499 and 1.4 times the predicted step (above 2 / omega_max, decision time-step-limit) the run completed
+    // with a displacement of 8 times the amplitude. The energy bound of a stable run stops it (exit 3); just
+    // below 2 / omega_max (1.35 times the prediction) it completes (decision swinging-blow-up).
+    SwingingCubeSetup s;
+    s.per_side = 4;
+    s.jitter = 0;
+    s.cube.material.poisson = 0.499;
+    s.end_time = 0.1;
+    s.time_step_check = false;
+    // The predicted limit as a cfl (dt = cfl L_min / c_p): C_stab c_p / c_eff, 0.548 here.
+    const double predicted_cfl =
+        stable_cfl_factor * s.cube.material.p_wave_speed() / effective_wave_speed(s.cube.material, s.options);
+    s.cfl = 1.4 * predicted_cfl;
+    CHECK_THROWS_AS(run_swinging_cube(s), NumericalError);
+    s.cfl = 1.35 * predicted_cfl;
+    CHECK(run_swinging_cube(s).displacement_error_l2 < 0.2);
 }
