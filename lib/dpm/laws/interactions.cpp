@@ -19,15 +19,24 @@ Eigen::Vector2d point(const Eigen::VectorXd& x, int v)
 // its derivatives. The gradient alone (FIRE) is analytic: dU/dr_j = -k (sigma - r) (r_j - r_i)/r = -dU/dr_i
 // (verification/dpm/system/contact_list.cpp checks it against AutoDiff); Hessians and virials come from
 // AutoDiff.
+// AutoDiff path, out of line so that the analytic path below stays small enough to inline into the contact
+// loops (FIRE evaluates it at every contact of every step).
+[[gnu::noinline]] double add_vertex_spring_derivatives(const VertexSpringEnergy& spring, int i, int j,
+                                                       const Eigen::Vector2d& ri, const Eigen::Vector2d& rj,
+                                                       Eigen::VectorXd* gradient, HessianSink hessian,
+                                                       Eigen::Matrix2d* virial)
+{
+    Eigen::Vector4d local;
+    local << ri, rj;
+    return add_local_term<2, 2>(spring, std::array<int, 2>{i, j}, local, gradient, hessian, virial);
+}
+
 double add_vertex_spring(const VertexSpringEnergy& spring, int i, int j, const Eigen::Vector2d& ri,
                          const Eigen::Vector2d& rj, Eigen::VectorXd* gradient, HessianSink hessian,
                          Eigen::Matrix2d* virial)
 {
-    if (hessian || virial) {
-        Eigen::Vector4d local;
-        local << ri, rj;
-        return add_local_term<2, 2>(spring, std::array<int, 2>{i, j}, local, gradient, hessian, virial);
-    }
+    if (hessian || virial)
+        return add_vertex_spring_derivatives(spring, i, j, ri, rj, gradient, hessian, virial);
     const Eigen::Vector2d d = rj - ri;
     const double r = d.norm(), overlap = spring.sigma - r;
     if (gradient) {
