@@ -10,6 +10,13 @@
 
 namespace softgrain::dpm {
 
+namespace {
+
+// Lanczos vectors for lambda_max of a 3D packing: its top eigenvalues form a band (largest_eigenvalue).
+constexpr Eigen::Index top_band_vectors = 80;
+
+} // namespace
+
 bool uses_sparse_hessian(HessianStorage storage, Eigen::Index degrees_of_freedom)
 {
     if (storage == HessianStorage::automatic) return degrees_of_freedom > dense_hessian_limit3d;
@@ -57,7 +64,7 @@ bool leave_saddle_sparse(const EnergyWithDerivatives& energy, const SparseHessia
     Eigen::VectorXd polished = x;
     polish_newton_sparse(energy, hessian, polished, 1e-14 * force_unit, 30, length);
     const Eigen::SparseMatrix<double> m = hessian(polished);
-    const double largest = std::abs(largest_eigenvalue(m)) / eigenvalue_unit;
+    const double largest = std::abs(largest_eigenvalue(m, top_band_vectors)) / eigenvalue_unit;
     const double bound = zero_mode_threshold(x.size(), largest, threshold);
     const std::optional<LowestModes> lowest = lowest_mode_below(m, bound * eigenvalue_unit);
     if (!lowest) return false;
@@ -96,7 +103,7 @@ double smallest_vertex_diameter(const DpmSystem3d& system)
 double largest_eigenvalue3d(const DpmSystem3d& system, const Eigen::VectorXd& x, HessianStorage storage)
 {
     if (uses_sparse_hessian(storage, x.size()))
-        return largest_eigenvalue(sparse_dynamical_matrix3d(system, x));
+        return largest_eigenvalue(sparse_dynamical_matrix3d(system, x), top_band_vectors);
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero(x.size(), x.size());
     total_energy3d(system, x, nullptr, &h);
     return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();

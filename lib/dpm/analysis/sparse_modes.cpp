@@ -106,18 +106,22 @@ int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
     return static_cast<int>((ldlt.vectorD().array() < 0).count());
 }
 
-double largest_eigenvalue(const Eigen::SparseMatrix<double>& m)
+double largest_eigenvalue(const Eigen::SparseMatrix<double>& m, Eigen::Index lanczos_vectors)
 {
     Spectra::SparseSymMatProd<double> product(m);
-    const Eigen::Index ncv = std::min<Eigen::Index>(m.rows(), 20);
-    Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, 1, ncv);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12);
-    if (solver.info() != Spectra::CompInfo::Successful)
-        throw NumericalError("largest eigenvalue of the sparse dynamical matrix (Lanczos, " +
-                                 std::to_string(m.rows()) + " rows)",
-                             solver.num_iterations(), "no convergence in 1000 restarts: a non-finite entry");
-    return solver.eigenvalues()(0);
+    int restarts = 0;
+    for (const Eigen::Index wanted : {lanczos_vectors, 4 * lanczos_vectors}) {
+        const Eigen::Index ncv = std::min<Eigen::Index>(m.rows(), wanted);
+        Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, 1, ncv);
+        solver.init();
+        solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12);
+        restarts += static_cast<int>(solver.num_iterations());
+        if (solver.info() == Spectra::CompInfo::Successful) return solver.eigenvalues()(0);
+    }
+    throw NumericalError("largest eigenvalue of the sparse dynamical matrix (Lanczos, " +
+                             std::to_string(m.rows()) + " rows, " + std::to_string(4 * lanczos_vectors) +
+                             " Lanczos vectors)",
+                         restarts, "no convergence in 1000 restarts: a non-finite entry");
 }
 
 namespace {
