@@ -95,16 +95,27 @@ FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOpt
         options);
 }
 
+double largest_force(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+    energy(x, &f, nullptr);
+    return f.cwiseAbs().maxCoeff();
+}
+
+double damped_step_fraction(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                            const Eigen::VectorXd& step, double start_force)
+{
+    double fraction = 1;
+    while (fraction > 1e-6 && !(largest_force(energy, x - fraction * step) < start_force))
+        fraction /= 2;
+    return fraction > 1e-6 ? fraction : 0;
+}
+
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps)
 {
-    const auto largest_force = [&energy](const Eigen::VectorXd& y) {
-        Eigen::VectorXd f = Eigen::VectorXd::Zero(y.size());
-        energy(y, &f, nullptr);
-        return f.cwiseAbs().maxCoeff();
-    };
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
-    const double start_force = largest_force(x);
+    const double start_force = largest_force(energy, x);
     for (int step = 0; step < max_steps; ++step) {
         g.setZero();
         Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
@@ -124,13 +135,11 @@ double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, do
         // accepted: on a manifold of minima (floppy packings) the largest force can rise for a step before
         // it falls quadratically.
         const Eigen::VectorXd newton_step = solver.eigenvectors() * step_in_modes;
-        double fraction = 1;
-        while (fraction > 1e-6 && !(largest_force(x - fraction * newton_step) < start_force))
-            fraction /= 2;
-        if (fraction <= 1e-6) break;
+        const double fraction = damped_step_fraction(energy, x, newton_step, start_force);
+        if (fraction == 0) break;
         x -= fraction * newton_step;
     }
-    return largest_force(x);
+    return largest_force(energy, x);
 }
 
 EnergyWithDerivatives system_energy(const DpmSystem& system)
@@ -165,8 +174,12 @@ bool leave_saddle(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, doubl
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(m);
     const Eigen::VectorXd lambda = solver.eigenvalues() / eigenvalue_unit;
     if (lambda(0) > -zero_mode_threshold(lambda, threshold)) return false;
+    return step_off_saddle(energy, polished, u0, solver.eigenvectors().col(0), max_amplitude, x);
+}
 
-    const Eigen::VectorXd lowest = solver.eigenvectors().col(0);
+bool step_off_saddle(const EnergyWithDerivatives& energy, const Eigen::VectorXd& polished, double u0,
+                     const Eigen::VectorXd& lowest, double max_amplitude, Eigen::VectorXd& x)
+{
     const double round_off =
         static_cast<double>(x.size()) * std::numeric_limits<double>::epsilon() * std::abs(u0);
     double best_change = -round_off, best_amplitude = 0;

@@ -138,6 +138,12 @@ constexpr double pseudo_inverse_cut = 1e-10;
 // the quadratic basin can throw a floppy packing far from its minimum.
 double polish_newton(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_tolerance,
                      int max_steps);
+// The largest force component max_i |dU/dx_i| at x.
+double largest_force(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x);
+// The damping of polish_newton: the largest fraction 2^-k, k < 20, of `step` at which x - fraction step has
+// a largest force below `start_force`; 0 where none has.
+double damped_step_fraction(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,
+                            const Eigen::VectorXd& step, double start_force);
 // The same on the total energy of a 2D system.
 double polish_newton(const DpmSystem& system, Eigen::VectorXd& x, double force_tolerance, int max_steps);
 // The equilibrium a packing's spectrum is taken at (decision dpm-zero-mode-count): polish_newton to a largest
@@ -159,6 +165,13 @@ double polish_for_modes(const DpmSystem& system, Eigen::VectorXd& x, double forc
 // shell packing).
 bool leave_saddle(const EnergyWithDerivatives& energy, Eigen::VectorXd& x, double force_unit,
                   double eigenvalue_unit, double threshold, double max_amplitude);
+
+// The move of leave_saddle once the saddle is found: x becomes `polished` (a critical point, energy
+// U(polished) = u0) moved along its unit lowest mode to the lowest energy among the amplitudes +-a,
+// a = 1e-6 sigma doubled up to max_amplitude, and true is returned; false, x unchanged, where no amplitude
+// lowers U by more than n eps |u0|.
+bool step_off_saddle(const EnergyWithDerivatives& energy, const Eigen::VectorXd& polished, double u0,
+                     const Eigen::VectorXd& lowest, double max_amplitude, Eigen::VectorXd& x);
 
 // U(x + amplitude e) - U(x), for any energy (2D or 3D) and for a 2D system.
 double energy_change_along(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x,

@@ -70,16 +70,6 @@ class ShiftedInverse
     double shift_ = 0;
 };
 
-// max_i sum_j |m_ij|: a bound on every |lambda| (Gershgorin), the scale of the first shift.
-double gershgorin_bound(const Eigen::SparseMatrix<double>& m)
-{
-    Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(m.rows());
-    for (Eigen::Index column = 0; column < m.outerSize(); ++column)
-        for (Eigen::SparseMatrix<double>::InnerIterator entry(m, column); entry; ++entry)
-            row_sums(entry.row()) += std::abs(entry.value());
-    return row_sums.maxCoeff();
-}
-
 } // namespace
 
 Eigen::SparseMatrix<double> sparse_dynamical_matrix(const DpmSystem& system, const Eigen::VectorXd& x,
@@ -98,6 +88,15 @@ Eigen::SparseMatrix<double> sparse_dynamical_matrix3d(const DpmSystem3d& system,
     return from_triplets(triplets, x.size());
 }
 
+double gershgorin_bound(const Eigen::SparseMatrix<double>& m)
+{
+    Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(m.rows());
+    for (Eigen::Index column = 0; column < m.outerSize(); ++column)
+        for (Eigen::SparseMatrix<double>::InnerIterator entry(m, column); entry; ++entry)
+            row_sums(entry.row()) += std::abs(entry.value());
+    return row_sums.maxCoeff();
+}
+
 int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
 {
     Eigen::SparseMatrix<double> identity(m.rows(), m.cols());
@@ -107,18 +106,22 @@ int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau)
     return static_cast<int>((ldlt.vectorD().array() < 0).count());
 }
 
-double largest_eigenvalue(const Eigen::SparseMatrix<double>& m)
+double largest_eigenvalue(const Eigen::SparseMatrix<double>& m, Eigen::Index lanczos_vectors)
 {
     Spectra::SparseSymMatProd<double> product(m);
-    const Eigen::Index ncv = std::min<Eigen::Index>(m.rows(), 20);
-    Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, 1, ncv);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12);
-    if (solver.info() != Spectra::CompInfo::Successful)
-        throw NumericalError("largest eigenvalue of the sparse dynamical matrix (Lanczos, " +
-                                 std::to_string(m.rows()) + " rows)",
-                             solver.num_iterations(), "no convergence in 1000 restarts: a non-finite entry");
-    return solver.eigenvalues()(0);
+    int restarts = 0;
+    for (const Eigen::Index wanted : {lanczos_vectors, 4 * lanczos_vectors}) {
+        const Eigen::Index ncv = std::min<Eigen::Index>(m.rows(), wanted);
+        Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, 1, ncv);
+        solver.init();
+        solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12);
+        restarts += static_cast<int>(solver.num_iterations());
+        if (solver.info() == Spectra::CompInfo::Successful) return solver.eigenvalues()(0);
+    }
+    throw NumericalError("largest eigenvalue of the sparse dynamical matrix (Lanczos, " +
+                             std::to_string(m.rows()) + " rows, " + std::to_string(4 * lanczos_vectors) +
+                             " Lanczos vectors)",
+                         restarts, "no convergence in 1000 restarts: a non-finite entry");
 }
 
 namespace {
@@ -142,6 +145,23 @@ ModeSpectrum lanczos_pass(ShiftedInverse& inverse, int count, LowestModes& out)
                              "eigenvalues 1/(lambda - sigma) too close together to separate in 1000 restarts "
                              "(a cluster of modes straddling the count-th); ask for more or fewer modes");
     return {solver.eigenvalues(), solver.eigenvectors()};
+}
+
+// Factors m - sigma for sigma = first, 10 first, 100 first, ... until every pivot is positive; out.shift
+// becomes that sigma, out.factorizations the factors computed. At most -2 R (R the Gershgorin bound, every
+// lambda >= -R, so that m + 2 R is definite; m + R is singular where lambda_0 = -R).
+void factor_definite_shift(ShiftedInverse& inverse, double first, double bound, LowestModes& out)
+{
+    out.shift = first;
+    for (out.factorizations = 1; !inverse.factor_definite(out.shift); ++out.factorizations) {
+        if (out.shift <= -2 * bound)
+            throw NumericalError("LDL^T factor of M - sigma at sigma = " + std::to_string(out.shift) +
+                                     " = -2 max row sum of |M|",
+                                 out.factorizations,
+                                 "a pivot <= 0 where M - sigma is definite by Gershgorin: a non-finite entry "
+                                 "of M or a factor ruined by round-off");
+        out.shift = std::max(10 * out.shift, -2 * bound);
+    }
 }
 
 // The union of two sets of eigenpairs, ascending.
@@ -176,16 +196,7 @@ LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count)
     LowestModes out;
     const double bound = gershgorin_bound(m);
     ShiftedInverse inverse(m);
-    out.shift = -1e-6 * bound;
-    for (out.factorizations = 1; !inverse.factor_definite(out.shift); ++out.factorizations) {
-        if (out.shift <= -bound)
-            throw NumericalError("LDL^T factor of M - sigma at sigma = " + std::to_string(out.shift) +
-                                     " = -max row sum of |M|",
-                                 out.factorizations,
-                                 "a pivot <= 0 where M - sigma is definite by Gershgorin: a non-finite entry "
-                                 "of M or a factor ruined by round-off");
-        out.shift = std::max(10 * out.shift, -bound);
-    }
+    factor_definite_shift(inverse, -1e-6 * bound, bound, out);
     // Completeness: Lanczos from one start vector can miss copies of a degenerate eigenvalue (the zero modes,
     // a symmetric packing) and return higher ones instead; then more than `count` eigenvalues lie below the
     // count-th found (Sylvester's inertia of M - tau, tau 1e-9 R above it). The missing ones are sought
@@ -214,6 +225,19 @@ LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count)
     }
     out.spectrum = {found.eigenvalues.head(count), found.eigenvectors.leftCols(count)};
     out.largest_eigenvalue = largest_eigenvalue(m);
+    return out;
+}
+
+std::optional<LowestModes> lowest_mode_below(const Eigen::SparseMatrix<double>& m, double threshold)
+{
+    ShiftedInverse inverse(m);
+    if (inverse.factor_definite(-threshold)) return std::nullopt;
+    const double bound = gershgorin_bound(m);
+    LowestModes out;
+    factor_definite_shift(inverse, std::max(-10 * threshold, -2 * bound), bound, out);
+    ++out.factorizations; // the indefinite factor at -threshold
+    out.spectrum = lanczos_pass(inverse, 1, out);
+    out.passes = 1;
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include "dpm/analysis/modes.hpp"
 
 #include <Eigen/SparseCore>
+#include <optional>
 
 namespace softgrain::dpm {
 
@@ -34,18 +35,24 @@ struct LowestModes
     double completeness_bound = 0; // tau of the last pass that found the count incomplete (0: none did)
 };
 
+// max_i sum_j |m_ij|: a bound on every |lambda| of the symmetric sparse m (Gershgorin).
+double gershgorin_bound(const Eigen::SparseMatrix<double>& m);
+
 // Number of eigenvalues of the symmetric sparse m below tau: the negative pivots of the LDL^T of m - tau
 // (Sylvester's law of inertia); -1 where the factor breaks down (a zero pivot).
 int eigenvalues_below(const Eigen::SparseMatrix<double>& m, double tau);
 
 // lambda_max of the symmetric sparse m by plain Lanczos (a few products: it lies at the end of the
-// spectrum); Spectra's relative tolerance 1e-12. NumericalError after 1000 restarts.
-double largest_eigenvalue(const Eigen::SparseMatrix<double>& m);
+// spectrum); Spectra's relative tolerance 1e-12, a Krylov space of `lanczos_vectors` (at most rows). Where
+// that does not converge in 1000 restarts, again with 4 times as many; then NumericalError. A packing's top
+// eigenvalues form a band (every particle's stiffest local modes, alike): on 64 x 42 shells (n = 8064) 20
+// vectors did not converge, 80 did in 24 restarts (3 s).
+double largest_eigenvalue(const Eigen::SparseMatrix<double>& m, Eigen::Index lanczos_vectors = 20);
 
 // The `count` lowest eigenpairs of the symmetric sparse m (1 <= count < rows). The shift starts at
 // sigma = -1e-6 R, R = max_i sum_j |m_ij| (Gershgorin: every |lambda| <= R), below the zero modes and the
 // slightly negative modes of a saddle; where the LDL^T factor of m - sigma has a pivot <= 0 (Sylvester's
-// inertia: an eigenvalue at or below sigma) sigma is multiplied by 10, at most to -R (always definite). A
+// inertia: an eigenvalue at or below sigma) sigma is multiplied by 10, at most to -2 R (always definite). A
 // definite shift keeps the factor without pivoting stable (the LDL^T of a positive definite matrix is
 // backward stable) and every 1/(lambda - sigma) positive, so the largest of them are the lowest lambda.
 // The condition number of m - sigma, at most (1 + 1e6) for the first shift, costs at most 1e6 eps in the
@@ -57,5 +64,15 @@ double largest_eigenvalue(const Eigen::SparseMatrix<double>& m);
 // (projected out). NumericalError with the converged count, the shift and the restarts when the iteration
 // does not converge in 1000 restarts, or when a deflated pass finds no missing mode.
 LowestModes lowest_modes(const Eigen::SparseMatrix<double>& m, int count);
+
+// The lowest eigenpair of the symmetric sparse m if its eigenvalue lies at or below -threshold (threshold
+// > 0), nothing otherwise: the test for a saddle without the whole spectrum (leave_saddle3d). Nothing when
+// m + threshold I factors with every LDL^T pivot positive (Sylvester's law of inertia: no eigenvalue at or
+// below -threshold). Otherwise the shift sigma = -10^k threshold, k = 1, 2, ..., stops at the first at
+// which m - sigma is definite (at most -2 R, R the Gershgorin bound), so that lambda_0 lies in (sigma,
+// sigma/10] and 1/(lambda_0 - sigma) stands at least 10/9 above 1/(lambda - sigma) of every eigenvalue
+// lambda >= 0 (the zero modes included, however degenerate): shift-and-invert Lanczos (Spectra, relative
+// tolerance 1e-12 as in lowest_modes) then separates it in a few restarts. NumericalError as lowest_modes.
+std::optional<LowestModes> lowest_mode_below(const Eigen::SparseMatrix<double>& m, double threshold);
 
 } // namespace softgrain::dpm

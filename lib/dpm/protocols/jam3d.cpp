@@ -2,10 +2,8 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "dpm/analysis/modes.hpp"
 #include "dpm/protocols/jam_schedule.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -119,11 +117,7 @@ Jam3dResult jam3d(const Jam3dOptions& options)
 
     // FIRE: time step from the stiffest mode at the start (as in 2D), tolerance 1e-4 P_t (in k_c sigma).
     FireOptions& fire = out.fire;
-    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(out.x.size(), out.x.size());
-    total_energy3d(s, out.x, nullptr, &h);
-    const double stiffest = std::max(
-        s.kc,
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff());
+    const double stiffest = std::max(s.kc, largest_eigenvalue3d(s, out.x, options.hessian));
     fire.dt_max = std::min(0.5, 0.3 / std::sqrt(stiffest));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
@@ -146,12 +140,8 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     // Saddle test and move: energy amplitudes up to 0.1 sigma (sigma = 1), as in the diagnosis of the
     // 16 x 42 shell packing (decision dpm-packing-minimum).
     const std::function<bool()> leave_saddle = [&] {
-        const EnergyWithDerivatives energy = [&s](const Eigen::VectorXd& y, Eigen::VectorXd* gradient,
-                                                  Eigen::MatrixXd* hessian) {
-            return total_energy3d(s, y, gradient, hessian);
-        };
-        return dpm::leave_saddle(energy, out.x, out.pressure_unit, out.eigenvalue_unit,
-                                 options.zero_threshold, 0.1);
+        return leave_saddle3d(s, out.x, out.pressure_unit, out.eigenvalue_unit, options.zero_threshold, 0.1,
+                              options.hessian);
     };
 
     BoxSchedule schedule;
@@ -185,10 +175,23 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     return out;
 }
 
-MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int matrices)
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int dense_matrices)
 {
-    const double vertices = particles * mesh_from_name(mesh).vertex_count();
-    return dense_matrix_memory(3 * vertices, matrices, "3 x particles x mesh vertices");
+    const double mesh_vertices = mesh_from_name(mesh).vertex_count();
+    const double n = 3 * particles * mesh_vertices;
+    const std::string what = "3 x particles x mesh vertices";
+    // The protocol's Hessian (packing_hessian3d.hpp). Dense: M and the eigensolver's n x n workspace (its
+    // eigenvectors). Sparse: the volume term of eq. (9.2) couples every pair of a particle's vertices, so M
+    // has at least (3 N_mu)^2 non-zeros per particle (measured: 127 188 for 8 x 42, 8 x 126^2 = 127 008),
+    // each held as an assembly triplet (16 B), in M (12 B) and in the lower half of its LDL^T factor (6 B).
+    const MemoryEstimate protocol =
+        n <= dense_hessian_limit3d
+            ? dense_matrix_memory(n, 2, what)
+            : per_item_memory(particles * std::pow(3 * mesh_vertices, 2), 34.0,
+                              "sparse Hessian non-zeros, particles x (3 x mesh vertices)^2");
+    if (dense_matrices == 0) return protocol;
+    const MemoryEstimate after = dense_matrix_memory(n, dense_matrices, what);
+    return after.bytes > protocol.bytes ? after : protocol;
 }
 
 } // namespace softgrain::dpm

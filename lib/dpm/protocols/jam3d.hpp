@@ -17,6 +17,7 @@
 
 #include "core/fire.hpp"
 #include "core/resources.hpp"
+#include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/protocols/single_particle3d.hpp"
 #include "dpm/system/system3d.hpp"
 
@@ -47,6 +48,9 @@ struct Jam3dOptions
     double zero_threshold = 1e-10;
     long fire_budget = 1000000; // FIRE steps per relaxation; beyond them: NumericalError
     double jump_step = 0;       // BoxSchedule::jump_step (0: off)
+    // The Hessian of FIRE's time step and of the saddle test: dense up to dense_hessian_limit3d degrees of
+    // freedom, sparse above (packing_hessian3d.hpp); tests force either.
+    HessianStorage hessian = HessianStorage::automatic;
 };
 
 // A relaxed packing at one target pressure.
@@ -79,9 +83,11 @@ struct Jam3dResult
 
 Jam3dResult jam3d(const Jam3dOptions& options);
 
-// A 3D packing of `particles` particles of the mesh named `mesh`, with `matrices` dense 3N x 3N matrices (the
-// Hessian of the Newton polish at P_t, and for a spectrum its eigenvectors).
-MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int matrices);
+// Memory of a 3D packing of `particles` particles of the mesh named `mesh`: the larger of the protocol's
+// Hessian (dense 3N x 3N matrices up to dense_hessian_limit3d, its sparse non-zeros above) and the
+// `dense_matrices` dense 3N x 3N matrices a scene needs after it (a dense spectrum: the matrix and its
+// eigenvectors; 0: none).
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int dense_matrices);
 
 // FIRE (core) on the total energy of a 3D system.
 FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options);

@@ -56,45 +56,6 @@ double smallest_vertex_diameter(const DpmSystem& system)
     return sigma;
 }
 
-// max_i sum_j |m_ij|: every |lambda| of m is below it (Gershgorin).
-double row_sum_bound(const Eigen::SparseMatrix<double>& m)
-{
-    Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(m.rows());
-    for (Eigen::Index column = 0; column < m.outerSize(); ++column)
-        for (Eigen::SparseMatrix<double>::InnerIterator entry(m, column); entry; ++entry)
-            row_sums(entry.row()) += std::abs(entry.value());
-    return row_sums.maxCoeff();
-}
-
-// The step dx of (M + mu I) dx = F with the smallest mu >= mu_start (times 10 per try) at which the LDL^T
-// has only positive pivots; mu is updated to the one used.
-Eigen::VectorXd regularised_newton_step(const Eigen::SparseMatrix<double>& hessian,
-                                        const Eigen::VectorXd& force, double& mu, double bound,
-                                        NewtonResult& result)
-{
-    Eigen::SparseMatrix<double> identity(hessian.rows(), hessian.cols());
-    identity.setIdentity();
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-    ldlt.analyzePattern(hessian + identity); // the pattern of M + mu I for any mu
-    for (;;) {
-        ldlt.factorize(hessian + mu * identity);
-        ++result.factorizations;
-        if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0) break;
-        if (mu >= 2 * bound)
-            throw NumericalError(
-                "LDL^T factor of M + mu I at mu = " + number_text(mu) + " = 2 max row sum of |M|",
-                result.steps,
-                "a pivot <= 0 where M + mu I is definite by Gershgorin: M has a non-finite entry "
-                "or the factor is ruined by round-off");
-        mu = std::min(10 * mu, 2 * bound);
-    }
-    Eigen::VectorXd step = ldlt.solve(force);
-    if (!step.allFinite())
-        throw NumericalError("Newton step solving (M + mu I) dx = F at mu = " + number_text(mu), result.steps,
-                             "a non-finite force or an ill-conditioned factor");
-    return step;
-}
-
 void require_finite(double energy, const Eigen::VectorXd& force, int step, const std::string& where)
 {
     if (!std::isfinite(energy) || !force.allFinite())
@@ -110,6 +71,32 @@ Relaxation relaxation_from_name(const std::string& name)
     if (name == "fire") return Relaxation::fire;
     if (name == "fire_newton") return Relaxation::fire_newton;
     throw InputError("relaxation = '" + name + "': allowed fire | fire_newton");
+}
+
+Eigen::VectorXd regularised_newton_step(const Eigen::SparseMatrix<double>& hessian,
+                                        const Eigen::VectorXd& force, double& mu, double bound,
+                                        int& factorizations, int step_index)
+{
+    Eigen::SparseMatrix<double> identity(hessian.rows(), hessian.cols());
+    identity.setIdentity();
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+    ldlt.analyzePattern(hessian + identity); // the pattern of M + mu I for any mu
+    for (;;) {
+        ldlt.factorize(hessian + mu * identity);
+        ++factorizations;
+        if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0) break;
+        if (mu >= 2 * bound)
+            throw NumericalError(
+                "LDL^T factor of M + mu I at mu = " + number_text(mu) + " = 2 max row sum of |M|", step_index,
+                "a pivot <= 0 where M + mu I is definite by Gershgorin: M has a non-finite entry "
+                "or the factor is ruined by round-off");
+        mu = std::min(10 * mu, 2 * bound);
+    }
+    Eigen::VectorXd step = ldlt.solve(force);
+    if (!step.allFinite())
+        throw NumericalError("Newton step solving (M + mu I) dx = F at mu = " + number_text(mu), step_index,
+                             "a non-finite force or an ill-conditioned factor");
+    return step;
 }
 
 double energy_round_off(const DpmSystem& system, const Eigen::VectorXd& x, double energy)
@@ -166,7 +153,7 @@ NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const Ne
         if (!hessian_current) {
             hessian = sparse_dynamical_matrix(system, x);
             ++result.force_evaluations;
-            bound = row_sum_bound(hessian);
+            bound = gershgorin_bound(hessian);
             if (!std::isfinite(bound))
                 throw NumericalError("dynamical matrix of the Newton finisher", result.steps,
                                      "a non-finite second derivative (a degenerate particle)");
@@ -177,7 +164,8 @@ NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const Ne
             std::max(theta * force.norm() / length, static_cast<double>(x.size()) * eps * bound);
         double mu = shift;
         const int factors_before = result.factorizations;
-        const Eigen::VectorXd step = regularised_newton_step(hessian, force, mu, bound, result);
+        const Eigen::VectorXd step =
+            regularised_newton_step(hessian, force, mu, bound, result.factorizations, result.steps);
         factorised += result.factorizations - factors_before;
         // A curvature of M below -100 times the shift: x is on the way over a saddle (a rearrangement), far
         // from the quadratic basin of a minimum, where FIRE's damped dynamics does better.

@@ -44,6 +44,7 @@
 #include "core/fire.hpp"
 #include "dpm/system/system.hpp"
 
+#include <Eigen/SparseCore>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,16 @@ struct NewtonResult
     std::vector<double> energies, force_norms; // at the start and after each accepted step (|F|, 2-norm)
     std::string stop_reason;                   // why it stopped unconverged
 };
+
+// The regularised Newton step dx of (M + mu I) dx = F (sparse symmetric M, Eigen's SimplicialLDLT) with the
+// smallest mu >= the given one (times 10 per try, at most 2 bound) at which the LDL^T has only positive
+// pivots; mu becomes the one used, `factorizations` counts the factors. bound >= every |lambda| of M (the
+// Gershgorin bound, sparse_modes.hpp), so M + 2 bound I is definite. NumericalError (naming `step_index`)
+// when it is not, or when the step is not finite. Also the step of the sparse 3D Newton polish
+// (packing_hessian3d.hpp).
+Eigen::VectorXd regularised_newton_step(const Eigen::SparseMatrix<double>& hessian,
+                                        const Eigen::VectorXd& force, double& mu, double bound,
+                                        int& factorizations, int step_index);
 
 // The finisher from x (x becomes the lowest-energy point reached).
 NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const NewtonOptions& options);

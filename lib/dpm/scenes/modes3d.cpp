@@ -6,6 +6,7 @@
 #include "core/output.hpp"
 #include "dpm/analysis/mode_energy.hpp"
 #include "dpm/analysis/modes.hpp"
+#include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/analysis/sparse_modes.hpp"
 #include "dpm/analysis/vtk_frames.hpp"
 #include "dpm/protocols/jam3d.hpp"
@@ -223,6 +224,22 @@ void write_mode_energy3d(const Eigen::VectorXd& lambda, const ModeEnergies& ener
         value_or_null(median_exponent(energies.modes, first_positive, soft_end, &ModeEnergy::exponent_large));
 }
 
+// e.M_shape.e: the curvature of the particles' shape energies (eq. 9.2) along the unit mode e, from their
+// Hessian M_shape, dense or (above dense_hessian_limit3d) sparse, as the protocol's.
+double shape_curvature_along(const DpmSystem3d& system, const Eigen::VectorXd& x, const Eigen::VectorXd& mode)
+{
+    std::vector<Eigen::Triplet<double>> triplets;
+    const bool sparse = uses_sparse_hessian(HessianStorage::automatic, x.size());
+    Eigen::MatrixXd dense = sparse ? Eigen::MatrixXd() : Eigen::MatrixXd::Zero(x.size(), x.size());
+    for (const Particle3d& particle : system.particles)
+        shape_energy3d(particle.shape, system.meshes[particle.mesh], x, particle.first, nullptr,
+                       sparse ? HessianSink(&triplets) : HessianSink(&dense));
+    if (!sparse) return mode.dot(dense * mode);
+    Eigen::SparseMatrix<double> shape_hessian(x.size(), x.size());
+    shape_hessian.setFromTriplets(triplets.begin(), triplets.end());
+    return mode.dot(shape_hessian * mode);
+}
+
 // The softest non-zero mode e of a packing (Fig. 9.15d-f, decision dpm-3d-surface-tension-slope): its shares
 // of |e|^2 in rigid particle translations, rotations and deformations (decompose_mode), and the fraction
 // e.M_shape.e / lambda of its eigenvalue that comes from the shape energies (eq. 9.2) of the particles; the
@@ -243,14 +260,10 @@ void write_softest_mode3d(const DpmSystem3d& system, const Eigen::VectorXd& x,
     }
     const Eigen::VectorXd mode = modes.col(first_positive);
     const ModeParts parts = decompose_mode(system, x, mode);
-    Eigen::MatrixXd shape_hessian = Eigen::MatrixXd::Zero(x.size(), x.size());
-    for (const Particle3d& particle : system.particles)
-        shape_energy3d(particle.shape, system.meshes[particle.mesh], x, particle.first, nullptr,
-                       &shape_hessian);
     summary[keys[0]] = parts.translation;
     summary[keys[1]] = parts.rotation;
     summary[keys[2]] = parts.deformation;
-    summary[keys[3]] = mode.dot(shape_hessian * mode) / eigenvalues(first_positive);
+    summary[keys[3]] = shape_curvature_along(system, x, mode) / eigenvalues(first_positive);
 }
 
 // Where the zero modes beyond the 3 uniform translations live (nontrivial_zero_mode_parts), particle by
@@ -316,13 +329,6 @@ struct PackingModes3d
     ModeEnergies energies;  // lengths v0^(1/3), energies k_v v0^2
 };
 
-EnergyWithDerivatives packing_energy(const Jam3dResult& packing)
-{
-    return [&packing](const Eigen::VectorXd& x, Eigen::VectorXd* gradient, Eigen::MatrixXd* hessian) {
-        return total_energy3d(packing.system, x, gradient, hessian);
-    };
-}
-
 PackingModes3d packing_modes3d(const Modes3dOptions& options)
 {
     Jam3dOptions jam = options.jam;
@@ -330,7 +336,8 @@ PackingModes3d packing_modes3d(const Modes3dOptions& options)
     PackingModes3d result;
     result.packing = jam3d(jam);
     const Jam3dResult& packing = result.packing;
-    result.force_max = polish_for_modes(packing_energy(packing), result.packing.x, packing.pressure_unit);
+    result.force_max = polish_for_modes3d(packing.system, result.packing.x, packing.pressure_unit,
+                                          HessianStorage::automatic);
     const auto started = std::chrono::steady_clock::now();
     result.computed = compute_modes3d(packing.system, packing.x, options.lowest_modes);
     result.spectrum_seconds = seconds_since(started);
@@ -346,7 +353,7 @@ PackingModes3d packing_modes3d(const Modes3dOptions& options)
     along.energy_unit = packing.energy_unit;
     along.first_positive = result.counts.first_positive();
     along.soft_end = result.soft_end;
-    result.energies = mode_energies(packing_energy(packing), packing.x, result.computed.modes, along);
+    result.energies = mode_energies(system_energy3d(packing.system), packing.x, result.computed.modes, along);
     return result;
 }
 
@@ -486,7 +493,15 @@ Scene modes3d_scene()
                        "bidisperse packing of them (particles > 1, Fig. 9.15b)",
                        modes3d_binding(), run_modes3d)
         .needing(modes3d_binding().estimate([](const Modes3dOptions& options) {
-            return packing3d_memory(options.jam.particles, options.jam.mesh, 2);
+            // Every mode: the dense matrix and its eigenvectors; the lowest K: the protocol's Hessian and K
+            // eigenvectors of n = 3 x particles x mesh vertices.
+            if (options.lowest_modes == 0)
+                return packing3d_memory(options.jam.particles, options.jam.mesh, 2);
+            MemoryEstimate need = packing3d_memory(options.jam.particles, options.jam.mesh, 0);
+            const double n = 3.0 * options.jam.particles * mesh_from_name(options.jam.mesh).vertex_count();
+            need.bytes += n * options.lowest_modes * sizeof(double);
+            need.basis += ", and lowest_modes eigenvectors of 3 x particles x mesh vertices doubles";
+            return need;
         }))
         .with_vtk();
 }
