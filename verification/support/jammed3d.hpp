@@ -9,6 +9,7 @@
 // 9.4.3: 3 periodic translations plus 6 per rattler).
 #pragma once
 
+#include "core/rng.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/protocols/jam3d.hpp"
 
@@ -66,6 +67,26 @@ inline dpm::ShapeParameters3d icosahedron_shape3d(dpm::ShapeModel model, const d
                                                   : shape_parameter3d(mesh_surface_area(mesh, reference, 0),
                                                                       mesh_volume(mesh, reference, 0));
     return model_shape3d(model, mesh, reference, A0, 1.0, Stiffness3d{});
+}
+
+// Fourteen randomly deformed icosahedral particles of the model (icosahedron_shape3d, vertices jittered by up
+// to 0.08) at random centres in a periodic cube of side 4.2 under a Lees-Edwards strain of 0.23, vertex
+// diameters 0.6-0.9: dense enough for many contacts, also across every face of the box.
+inline dpm::DpmSystem3d random_sheared3d(dpm::ShapeModel model, Rng& rng, Eigen::VectorXd& x)
+{
+    dpm::DpmSystem3d s;
+    s.box = 4.2;
+    s.lees_edwards_strain = 0.23;
+    s.meshes.push_back(dpm::icosahedron_mesh());
+    const dpm::ShapeParameters3d shape = icosahedron_shape3d(model, s.meshes[0]);
+    for (int m = 0; m < 14; ++m) {
+        const Eigen::Vector3d centre(rng.uniform(0, 4.2), rng.uniform(0, 4.2), rng.uniform(0, 4.2));
+        Eigen::Matrix3Xd v = s.meshes[0].vertices.colwise() + centre;
+        for (Eigen::Index k = 0; k < v.size(); ++k)
+            v(k) += 0.08 * rng.uniform(-1, 1);
+        s.add_particle(0, v, rng.uniform(0.6, 0.9), shape, x);
+    }
+    return s;
 }
 
 } // namespace softgrain::verification

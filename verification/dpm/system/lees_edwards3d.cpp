@@ -15,30 +15,10 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
-using softgrain::verification::icosahedron_shape3d;
+using softgrain::verification::random_sheared3d;
 using softgrain::verification::Tolerance;
 
 namespace {
-
-// Fourteen randomly deformed icosahedral particles of the model (circumradius 1, k_v = 1, Stiffness3d's k's,
-// floppy A0 = 1.15 > A_mesh = 1.098) at random centres in a periodic cube of side 4.2 under a Lees-Edwards
-// strain of 0.23: dense enough for many contacts, also across every face of the box.
-DpmSystem3d random_sheared3d(ShapeModel model, Rng& rng, Eigen::VectorXd& x)
-{
-    DpmSystem3d s;
-    s.box = 4.2;
-    s.lees_edwards_strain = 0.23;
-    s.meshes.push_back(icosahedron_mesh());
-    const ShapeParameters3d shape = icosahedron_shape3d(model, s.meshes[0]);
-    for (int m = 0; m < 14; ++m) {
-        const Eigen::Vector3d centre(rng.uniform(0, 4.2), rng.uniform(0, 4.2), rng.uniform(0, 4.2));
-        Eigen::Matrix3Xd v = s.meshes[0].vertices.colwise() + centre;
-        for (Eigen::Index k = 0; k < v.size(); ++k)
-            v(k) += 0.08 * rng.uniform(-1, 1);
-        s.add_particle(0, v, rng.uniform(0.6, 0.9), shape, x);
-    }
-    return s;
-}
 
 double energy_after_shear(DpmSystem3d s, Eigen::VectorXd x, double dgamma)
 {

@@ -10,25 +10,9 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
-using softgrain::verification::icosahedron_shape3d;
+using softgrain::verification::random_sheared3d;
 
 namespace {
-
-// Fourteen shell icosahedra (circumradius 1) at random centres in a periodic cube of side 4.2 under a
-// Lees-Edwards strain of 0.23: many contacts, also across the sheared boundary.
-DpmSystem3d random_packing3d(Rng& rng, Eigen::VectorXd& x)
-{
-    DpmSystem3d s;
-    s.box = 4.2;
-    s.lees_edwards_strain = 0.23;
-    s.meshes.push_back(icosahedron_mesh());
-    const ShapeParameters3d shape = icosahedron_shape3d(ShapeModel::shell, s.meshes[0]);
-    for (int m = 0; m < 14; ++m) {
-        const Eigen::Vector3d centre(rng.uniform(0, 4.2), rng.uniform(0, 4.2), rng.uniform(0, 4.2));
-        s.add_particle(0, s.meshes[0].vertices.colwise() + centre, rng.uniform(0.6, 0.9), shape, x);
-    }
-    return s;
-}
 
 int contact_total(const DpmSystem3d& s, const Eigen::VectorXd& x)
 {
@@ -45,7 +29,7 @@ TEST_CASE("3D vertex list: rebuilt exactly when a vertex moves beyond half the s
 {
     Rng rng(31);
     Eigen::VectorXd x;
-    DpmSystem3d s = random_packing3d(rng, x);
+    DpmSystem3d s = random_sheared3d(ShapeModel::shell, rng, x);
     REQUIRE(s.contacts.builds() == 0);
     const double skin = s.contacts.list(s, x)->skin();
     REQUIRE(skin > 0);
@@ -85,7 +69,7 @@ TEST_CASE("3D vertex list: results do not depend on when the list was built (bit
 {
     Rng rng(32);
     Eigen::VectorXd start;
-    DpmSystem3d s = random_packing3d(rng, start);
+    DpmSystem3d s = random_sheared3d(ShapeModel::shell, rng, start);
     interaction_energy3d(s, start, nullptr, nullptr); // the list is built at `start`
     const double skin = s.contacts.list(s, start)->skin();
     // Each vertex moves less than skin/2 in the unsheared coordinates: |d| (1 + gamma) sqrt(3) 0.2 skin.
