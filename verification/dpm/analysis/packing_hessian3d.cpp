@@ -16,6 +16,7 @@
 #include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/analysis/sparse_modes.hpp"
 #include "dpm/protocols/jam3d.hpp"
+#include "support/quartic_valley.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -24,6 +25,7 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::quartic_valley;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
@@ -38,17 +40,6 @@ Jam3dResult fire_packing()
     o.pressure_onset = 1e-5;
     o.seed = 3;
     return jam3d(o);
-}
-
-// U = c + a2/2 x^2 + a4/4 x^4 + 1/2 y^2 with its exact gradient and Hessian (as in saddle.cpp).
-EnergyWithDerivatives quartic_valley(double c, double a2, double a4)
-{
-    return [=](const Eigen::VectorXd& r, Eigen::VectorXd* g, Eigen::MatrixXd* h) {
-        const double x = r(0), y = r(1);
-        if (g) *g += Eigen::Vector2d(a2 * x + a4 * x * x * x, y);
-        if (h) *h += Eigen::Vector2d(a2 + 3 * a4 * x * x, 1.0).asDiagonal().toDenseMatrix();
-        return c + 0.5 * a2 * x * x + 0.25 * a4 * x * x * x * x + 0.5 * y * y;
-    };
 }
 
 SparseHessianOf sparse_of(const EnergyWithDerivatives& energy)

@@ -5,27 +5,14 @@
 #include "core/fire.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/protocols/jam_schedule.hpp"
+#include "support/quartic_valley.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
-
-namespace {
-
-// U = c + a2/2 x^2 + a4/4 x^4 + 1/2 y^2 with its exact gradient and Hessian.
-EnergyWithDerivatives quartic_valley(double c, double a2, double a4)
-{
-    return [=](const Eigen::VectorXd& r, Eigen::VectorXd* g, Eigen::MatrixXd* h) {
-        const double x = r(0), y = r(1);
-        if (g) *g += Eigen::Vector2d(a2 * x + a4 * x * x * x, y);
-        if (h) *h += Eigen::Vector2d(a2 + 3 * a4 * x * x, 1.0).asDiagonal().toDenseMatrix();
-        return c + 0.5 * a2 * x * x + 0.25 * a4 * x * x * x * x + 0.5 * y * y;
-    };
-}
-
-} // namespace
+using softgrain::verification::quartic_valley;
 
 TEST_CASE("leave_saddle moves a saddle to the lowest energy along its negative mode [decision "
           "dpm-packing-minimum]")
