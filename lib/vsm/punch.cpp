@@ -15,13 +15,13 @@ constexpr double width = 1.0, height = 0.5, thickness = 0.1;
 constexpr int punch_label = 6;
 
 // Downward reaction on the punch: minus the X2 component of the reactions D P_a A_ab on its ghosts.
-double punch_reaction(const Model& model, const Domain& domain, const Points<3>& x, double t)
+double punch_reaction(const Model& model, const Points<3>& x, double t)
 {
     const LameParameters lame = model.material().lame();
     double force = 0;
     for (int a = 0; a < static_cast<int>(model.size()); ++a)
         for (const Neighbour& nb : model.cells().neighbours[static_cast<std::size_t>(a)])
-            if (nb.ghost() && domain.faces[static_cast<std::size_t>(nb.face)].label == punch_label) {
+            if (nb.ghost() && nb.label == punch_label) {
                 const Mat3 P = neo_hookean_stress(model.deformation_gradient(x, a, t), lame);
                 force += (P * (nb.area * nb.normal)).y(); // reaction on the particle, eq. (42) discussion
             }
@@ -116,7 +116,7 @@ PunchResult run_punch(const PunchSetup& setup, const std::function<void(const Pu
         snap.t = integrator.state().t;
         snap.x = integrator.positions();
         measure(model, snap.x, snap.t, snap);
-        snap.punch_force = punch_reaction(model, domain, snap.x, snap.t);
+        snap.punch_force = punch_reaction(model, snap.x, snap.t);
         if (observe) observe(snap);
         r.snapshots.push_back(std::move(snap));
     }

@@ -29,6 +29,7 @@ struct FaceGeometry
 {
     double area = 0;
     Vec3 centroid_relative = Vec3::Zero();
+    double radius = 0; // largest distance of a vertex from the centroid
 };
 
 FaceGeometry face_geometry(const std::vector<double>& vertices, const std::vector<int>& loop,
@@ -53,7 +54,11 @@ FaceGeometry face_geometry(const std::vector<double>& vertices, const std::vecto
     for (int k = 1; k + 1 < count; ++k)
         weighted +=
             triangle_areas[static_cast<std::size_t>(k - 1)].dot(n) * (p0 + vertex(k) + vertex(k + 1)) / 3.0;
-    return FaceGeometry{area, weighted / area};
+    const Vec3 centroid = weighted / area;
+    double radius = 0;
+    for (int k = 0; k < count; ++k)
+        radius = std::max(radius, (vertex(k) - centroid).norm());
+    return FaceGeometry{area, centroid, radius};
 }
 
 struct VoronoiFace
@@ -67,8 +72,13 @@ struct VoronoiCell
     std::vector<VoronoiFace> faces;
 };
 
-// Voronoi cells of all points (one per column) inside the box [low, high] (non-periodic walls).
-std::vector<VoronoiCell> compute_cells(const Points<3>& points, const Vec3& low, const Vec3& high)
+// voro++'s neighbour id of a face on the spherical wall (its container walls are -1 ... -6).
+constexpr int sphere_wall_id = -7;
+
+// Voronoi cells of all points (one per column) inside the box [low, high] (non-periodic walls), each cut by
+// its tangent plane to the sphere |X| = sphere_radius when that is > 0 (voro++'s wall_sphere).
+std::vector<VoronoiCell> compute_cells(const Points<3>& points, const Vec3& low, const Vec3& high,
+                                       double sphere_radius)
 {
     const int n = static_cast<int>(points.cols());
     const Vec3 size = high - low;
@@ -78,6 +88,8 @@ std::vector<VoronoiCell> compute_cells(const Points<3>& points, const Vec3& low,
     };
     voro::container container(low.x(), high.x(), low.y(), high.y(), low.z(), high.z(), blocks(0), blocks(1),
                               blocks(2), false, false, false, 8);
+    voro::wall_sphere sphere(0, 0, 0, sphere_radius, sphere_wall_id);
+    if (sphere_radius > 0) container.add_wall(sphere);
     for (int i = 0; i < n; ++i)
         container.put(i, points(0, i), points(1, i), points(2, i));
     std::vector<VoronoiCell> cells(static_cast<std::size_t>(n));
@@ -120,6 +132,7 @@ bool projects_onto(const BoundaryFace& face, const Vec3& X, double tolerance)
 
 bool inside(const Domain& domain, const Vec3& X)
 {
+    if (domain.sphere_radius > 0 && !(X.norm() < domain.sphere_radius)) return false;
     for (const auto& [low, high] : domain.boxes)
         if ((X.array() > low.array()).all() && (X.array() < high.array()).all()) return true;
     return false;
@@ -166,6 +179,53 @@ Domain l_block_domain(double a, double b, double t)
     return d;
 }
 
+Domain ball_octant_domain(double R)
+{
+    if (!(R > 0)) throw InputError("ball octant: the radius must be positive");
+    const Vec3 high = Vec3::Constant(R);
+    Domain d;
+    for (int axis = 0; axis < 3; ++axis)
+        d.faces.push_back(make_face(axis, 0.0, -1, Vec3::Zero(), high, axis));
+    d.boxes = {{Vec3::Zero(), high}};
+    d.high = high;
+    d.volume = std::acos(-1.0) * R * R * R / 6;
+    d.sphere_radius = R;
+    d.sphere_label = 3;
+    return d;
+}
+
+namespace {
+
+// The ghost of particle a across the sphere: the face its tangent plane cut from its cell (section 2.1 with
+// W_ab the closest point on the sphere).
+Neighbour sphere_ghost(const Vec3& X_a, const FaceGeometry& face, const Domain& domain)
+{
+    const Vec3 W = domain.sphere_radius * X_a.normalized();
+    const Vec3 ghost = 2 * W - X_a;
+    Neighbour nb;
+    nb.label = domain.sphere_label;
+    nb.branch = ghost - X_a;
+    nb.length = nb.branch.norm();
+    nb.area = face.area;
+    nb.normal = nb.branch / nb.length;
+    nb.centroid = face.centroid_relative + X_a;
+    nb.B_ab = gradient_vector(nb.area, nb.length, nb.centroid, X_a);
+    nb.B_ba = gradient_vector(nb.area, nb.length, nb.centroid, ghost);
+    nb.boundary_point = W;
+    return nb;
+}
+
+// Upper bound of the volume a spherical facet of area A adds to the ball: the sphere lies below the tangent
+// plane at W by R - sqrt(R^2 - s^2) at the distance s from W, and no point of the facet is farther from W
+// than its radius plus the distance of its centroid from W.
+double sliver_bound(const Neighbour& nb, const FaceGeometry& face, double R)
+{
+    const double s = std::min(R, face.radius + (nb.centroid - nb.boundary_point).norm());
+    return nb.area * (R - std::sqrt(R * R - s * s));
+}
+
+} // namespace
+
 ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, double mirror_distance)
 {
     const int n = static_cast<int>(X.cols());
@@ -209,7 +269,8 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
     for (std::size_t g = 0; g < ghosts.size(); ++g)
         all.col(n + static_cast<Eigen::Index>(g)) = ghosts[g];
     const Vec3 margin = Vec3::Constant(mirror_distance + 1e-3 * extent);
-    const std::vector<VoronoiCell> cells = compute_cells(all, domain.low - margin, domain.high + margin);
+    const std::vector<VoronoiCell> cells =
+        compute_cells(all, domain.low - margin, domain.high + margin, domain.sphere_radius);
 
     ReferenceCells ref;
     ref.X = X;
@@ -223,14 +284,19 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
 
     // Real-real faces are taken once, from the cell of the lower index, so that B_ab and B_ba use the same
     // face geometry (this makes eq. (11) exact); a face seen only from one side (a degenerate, zero-area face
-    // of a regular lattice) is still entered on both sides.
-    std::map<std::pair<int, int>, FaceGeometry> shared;
+    // of a regular lattice) is still entered on both sides. Under a sphere each cell is cut by its own
+    // tangent plane, so the two cells of a pair near the surface may clip their common face differently:
+    // there each side keeps the face as its own cell bounds it (a side that does not see it gets zero
+    // area), which closes every cell, sum_b X_ab (x) B_ab = V_a I, and keeps F_a exact for affine fields.
+    std::map<std::pair<int, int>, FaceGeometry> shared, seen_from; // seen_from[(a, b)]: a's own view
+    const bool own_views = domain.sphere_radius > 0;
     for (int a = 0; a < n; ++a) {
         const VoronoiCell& cell = cells[static_cast<std::size_t>(a)];
         ref.volume[static_cast<std::size_t>(a)] = cell.volume;
         total_volume += cell.volume;
         for (const VoronoiFace& face : cell.faces) {
             const int b = face.neighbour;
+            if (b == sphere_wall_id) continue;
             if (b < 0)
                 throw InputError("the cell of particle " + std::to_string(a) +
                                  " reaches the container wall: increase mirror_distance");
@@ -239,8 +305,14 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
             g.centroid_relative += X.col(a); // absolute centroid
             const auto key = std::minmax(a, b);
             if (a == key.first || !shared.count(key)) shared[key] = g;
+            seen_from[{a, b}] = g;
         }
     }
+    const auto view = [&](int p, int q, const FaceGeometry& common) {
+        if (!own_views) return common;
+        const auto own = seen_from.find({p, q});
+        return own != seen_from.end() ? own->second : FaceGeometry{0, common.centroid_relative, 0};
+    };
     for (const auto& [key, g] : shared) {
         const auto [a, b] = key;
         for (int side = 0; side < 2; ++side) {
@@ -249,17 +321,27 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
             nb.particle = q;
             nb.branch = X.col(q) - X.col(p);
             nb.length = nb.branch.norm();
-            nb.area = g.area;
+            const FaceGeometry mine = view(p, q, g), theirs = view(q, p, g);
+            nb.area = mine.area;
             nb.normal = nb.branch / nb.length;
-            nb.centroid = g.centroid_relative;
-            nb.B_ab = gradient_vector(g.area, nb.length, nb.centroid, X.col(p));
-            nb.B_ba = gradient_vector(g.area, nb.length, nb.centroid, X.col(q));
+            nb.centroid = mine.centroid_relative;
+            nb.B_ab = gradient_vector(mine.area, nb.length, nb.centroid, X.col(p));
+            nb.B_ba = gradient_vector(theirs.area, nb.length, theirs.centroid_relative, X.col(q));
             ref.neighbours[static_cast<std::size_t>(p)].push_back(nb);
         }
     }
+    double sliver_volume = 0; // bound of the cells' volume outside a spherical boundary
     for (int a = 0; a < n; ++a) {
         const VoronoiCell& cell = cells[static_cast<std::size_t>(a)];
         for (const VoronoiFace& face : cell.faces) {
+            if (face.neighbour == sphere_wall_id) {
+                if (face.geometry.area < negligible_area) continue;
+                Neighbour nb = sphere_ghost(X.col(a), face.geometry, domain);
+                sliver_volume += sliver_bound(nb, face.geometry, domain.sphere_radius);
+                ref.neighbours[static_cast<std::size_t>(a)].push_back(nb);
+                ++ref.ghost_count;
+                continue;
+            }
             const int g = face.neighbour - n;
             if (g < 0) continue;
             const auto owner = owner_face.find({a, g});
@@ -272,6 +354,7 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
             }
             Neighbour nb;
             nb.face = owner->second;
+            nb.label = domain.faces[static_cast<std::size_t>(nb.face)].label;
             nb.branch = ghosts[static_cast<std::size_t>(g)] - X.col(a);
             nb.length = nb.branch.norm();
             nb.area = face.geometry.area;
@@ -297,11 +380,16 @@ ReferenceCells build_reference_cells(const Points<3>& X, const Domain& domain, d
             sum += nb.B_ab;
         ref.B_self[static_cast<std::size_t>(a)] = -sum; // eq. (9)
     }
-    if (std::abs(total_volume - domain.volume) > 1e-9 * domain.volume) {
+    // Flat faces: the cells tile D exactly. A sphere: they cover it (every point of the ball lies below every
+    // tangent plane), and exceed it by at most the slivers under the spherical facets.
+    const double slack = 1e-9 * domain.volume;
+    if (total_volume < domain.volume - slack || total_volume > domain.volume + sliver_volume + slack) {
         std::ostringstream m;
         m.precision(12);
         m << "the reference Voronoi cells do not tile the domain: sum V_a = " << total_volume
-          << " but |D| = " << domain.volume << " (mirror_distance " << mirror_distance << " too small?)";
+          << " but |D| = " << domain.volume;
+        if (domain.sphere_radius > 0) m << " (+ at most " << sliver_volume << " of spherical slivers)";
+        m << " (mirror_distance " << mirror_distance << " too small?)";
         throw InputError(m.str());
     }
     return ref;

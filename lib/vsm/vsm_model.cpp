@@ -99,7 +99,7 @@ Model::Model(ReferenceCells cells, const Domain& domain, BoundaryConditions bc, 
         for (int k = 0; k < m; ++k) {
             const Neighbour& nb = list[static_cast<std::size_t>(k)];
             if (!nb.ghost()) continue;
-            const int label = domain.faces[static_cast<std::size_t>(nb.face)].label;
+            const int label = nb.label;
             if (label < 0 || label >= static_cast<int>(bc_.kind.size()))
                 throw InputError("no boundary condition for face label " + std::to_string(label));
             const BoundaryKind kind = bc_.kind[static_cast<std::size_t>(label)];
@@ -333,7 +333,74 @@ Points<3> Model::forces(const Points<3>& x, double t, long step, const Points<3>
         }
     }
     if (options_.xi_n > 0 || options_.xi_t > 0) f += contact_forces(x, F, t);
+    if (!bc_.plates.empty()) add_plate_forces(x, t, f);
     return f;
+}
+
+template <class OnTouch>
+void Model::for_each_plate_contact(const Points<3>& x, double t, OnTouch&& on_touch) const
+{
+    for (int a = 0; a < static_cast<int>(size()); ++a) {
+        const auto ua = static_cast<std::size_t>(a);
+        std::vector<Vec3> branch;
+        for (const Ghost& g : ghosts_[ua]) {
+            if (g.kind != BoundaryKind::free) continue;
+            for (std::size_t p = 0; p < bc_.plates.size(); ++p) {
+                const RigidPlate& plate = bc_.plates[p];
+                if (plate.label != g.label) continue;
+                if (branch.empty()) branch = ghost_branches(x, a, t);
+                const auto k = static_cast<std::size_t>(g.slot);
+                const Vec3 w = x.col(a) + 0.5 * branch[k]; // w_ab = (x_a + x_b)/2
+                const double gap = plate.normal.dot(w) - plate.height(t);
+                if (gap <= 0) continue;
+                const Neighbour& nb = cells_.neighbours[ua][k];
+                on_touch(a, g, p, nb.area * plate.penalty * material_.young / nb.length, gap);
+            }
+        }
+    }
+}
+
+void Model::add_plate_forces(const Points<3>& x, double t, Points<3>& f) const
+{
+    for_each_plate_contact(x, t, [&](int a, const Ghost& g, std::size_t p, double k, double gap) {
+        // w_ab = x_a + x'_ab/2 with x'_ab = sum_{c in I'} K'_abc (x_c - x_a) + sum_{c in E'} K'_abc 2 (w_ac - x_a),
+        // eq. (23): dw/dx_c = K'_abc/2 for a real neighbour c, dw/dx_a = 1 - sum K'/2 - sum_{E'} K'.
+        const Vec3 push = -k * gap * bc_.plates[p].normal;
+        const auto ua = static_cast<std::size_t>(a);
+        const auto& list = cells_.neighbours[ua];
+        const int row = free_rows_[ua][static_cast<std::size_t>(g.slot)];
+        double own = 1;
+        for (std::size_t c = 0; c < list.size(); ++c) {
+            const double coefficient = K_prime_[ua](row, static_cast<Eigen::Index>(c));
+            if (coefficient == 0) continue;
+            if (list[c].ghost()) {
+                own -= coefficient;
+            } else {
+                own -= 0.5 * coefficient;
+                f.col(list[c].particle) += 0.5 * coefficient * push;
+            }
+        }
+        f.col(a) += own * push;
+    });
+}
+
+Model::PlateLoad Model::plate_load(const Points<3>& x, double t, std::size_t plate) const
+{
+    PlateLoad load;
+    for_each_plate_contact(x, t, [&](int, const Ghost&, std::size_t p, double k, double gap) {
+        if (p != plate) return;
+        load.force += k * gap;
+        ++load.contacts;
+    });
+    return load;
+}
+
+double Model::plate_energy(const Points<3>& x, double t) const
+{
+    double energy = 0;
+    for_each_plate_contact(
+        x, t, [&](int, const Ghost&, std::size_t, double k, double gap) { energy += 0.5 * k * gap * gap; });
+    return energy;
 }
 
 template <class OnReal, class OnGhost>

@@ -30,6 +30,21 @@ enum class BoundaryKind {
 
 Mat3 boundary_projection(BoundaryKind kind, const Vec3& normal); // D_ab, eq. (14)
 
+// A rigid frictionless plate on a free surface (compare.solid: a ball between plates; not in the paper,
+// decision vsm-plate-contact). The plate is the plane normal . w = height(t), normal the unit vector out of
+// the body. The boundary point of a free face, w_ab = x_a + x_ab/2 (x_ab the least-squares ghost branch of
+// eq. (24) with D = 0), stores the penalty energy A_ab kappa_ab g^2/2 when it lies beyond the plane by
+// g = normal . w_ab - height > 0, kappa_ab = penalty E / L_ab [Pa/m]. Its force follows from that energy
+// through w_ab's dependence on x_a and on a's neighbours (eq. (22)), so the forces on the particles sum to
+// the plate's load and the system keeps its energy.
+struct RigidPlate
+{
+    int label = -1;                         // the faces it can touch
+    Vec3 normal = Vec3::UnitZ();            // unit, out of the body
+    std::function<double(double t)> height; // m
+    double penalty = 25;                    // c_pen, 1
+};
+
 struct BoundaryConditions
 {
     std::vector<BoundaryKind> kind; // per face label
@@ -38,6 +53,7 @@ struct BoundaryConditions
     std::function<Vec3(int label, const Vec3& W, double t)> displacement;
     // Nominal traction T_bar(label, W, t) [Pa] on free faces, eq. (39); empty for traction-free surfaces.
     std::function<Vec3(int label, const Vec3& W, double t)> traction;
+    std::vector<RigidPlate> plates; // on free faces
 };
 
 enum class InternalForce {
@@ -108,6 +124,15 @@ class Model
     Points<3> contact_forces(const Points<3>& x, const std::vector<Mat3>& F, double t) const;
     double internal_energy(const Points<3>& x, double t) const;
     double contact_energy_total(const Points<3>& x, double t) const;
+    // The load on plate `plate` (of BoundaryConditions::plates): sum of A_ab kappa_ab g over its contacts [N],
+    // along its normal, and the number of contacts; and the penalty energy of all plates [J].
+    struct PlateLoad
+    {
+        double force = 0;
+        int contacts = 0;
+    };
+    PlateLoad plate_load(const Points<3>& x, double t, std::size_t plate) const;
+    double plate_energy(const Points<3>& x, double t) const;
 
     const std::vector<std::vector<JacobianTerm>>& stress_jacobian() const { return stress_jacobian_; }
     const std::vector<std::vector<JacobianTerm>>& full_jacobian() const { return full_jacobian_; }
@@ -129,6 +154,11 @@ class Model
                           OnGhost&& on_ghost) const;
     // xbar_ab, section 2.4.
     Vec3 prescribed_branch(const Points<3>& x, int a, const Neighbour& nb, int label, double t) const;
+    // Calls on_touch(a, ghost, plate index, k = A_ab kappa_ab, g) for every free boundary point beyond a plate.
+    template <class OnTouch>
+    void for_each_plate_contact(const Points<3>& x, double t, OnTouch&& on_touch) const;
+    // Adds the plate penalty forces -k g normal^T dw_ab/dx_c to f.
+    void add_plate_forces(const Points<3>& x, double t, Points<3>& f) const;
 
     ReferenceCells cells_;
     Domain domain_;

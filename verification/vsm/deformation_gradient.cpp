@@ -53,7 +53,7 @@ TEST_CASE(
             const Domain domain = box_domain(Vec3::Zero(), Vec3::Ones());
             const Mat3 G = random_matrix(rng, 0.2);
             const Vec3 c(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-            BoundaryConditions bc{kinds, [&](int, const Vec3& W, double) { return Vec3(c + G * W); }, {}};
+            BoundaryConditions bc{kinds, [&](int, const Vec3& W, double) { return Vec3(c + G * W); }, {}, {}};
             const Model model(build_reference_cells(X, domain, 0.5), domain, bc, rubber, {});
             Points<3> x = (Mat3::Identity() + G) * X;
             x.colwise() += c;
@@ -77,7 +77,7 @@ TEST_CASE("F_a is affine in the positions with the linear map of Appendix C (M''
     const Domain domain = box_domain(Vec3::Zero(), Vec3::Ones());
     for (const auto& kinds : box_condition_sets()) {
         BoundaryConditions bc{
-            kinds, [](int, const Vec3& W, double) { return Vec3(1e-3 * W.squaredNorm(), 0, 0); }, {}};
+            kinds, [](int, const Vec3& W, double) { return Vec3(1e-3 * W.squaredNorm(), 0, 0); }, {}, {}};
         const Model model(build_reference_cells(X, domain, 0.5), domain, bc, rubber, {});
         Points<3> x = X + random_matrix(rng, 0.01) * X;
         const double step = 1e-4;

@@ -62,7 +62,7 @@ const std::vector<BoundaryKind> all_free(6, BoundaryKind::free);
 TEST_CASE("internal force of eq. (43) is -dV_int/dx for a free body [VSM eqs. (33), (40), (43)]")
 {
     const Setup s = deformed_cube(41, 0.02);
-    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber,
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber,
                       {InternalForce::eq43, 0, 0});
     const Points<3> f = model.forces(s.x, 0.0);
     const Points<3> g = numerical_gradient(
@@ -87,7 +87,7 @@ TEST_CASE(
                               [](int label, const Vec3& W, double) {
                                   return Vec3(1e-3 * W.y() * (label + 1), 0, -2e-3 * W.x());
                               },
-                              {}};
+                              {}, {}};
         const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, bc, rubber,
                           {InternalForce::eq43, 1, 1});
         const Points<3> f = model.contact_forces(s.x, model.deformation_gradients(s.x, 0.0), 0.0);
@@ -108,7 +108,7 @@ TEST_CASE(
     const Points<3> x = R * s.x; // a rotated, deformed state
     double torque_43 = 0, torque_42 = 0;
     for (InternalForce internal : {InternalForce::eq43, InternalForce::eq41}) {
-        const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber,
+        const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber,
                           {internal, 1, 1});
         const Points<3> f = model.forces(x, 0.0);
         const double scale = f.colwise().norm().sum();
@@ -131,7 +131,7 @@ TEST_CASE(
     "an inverted particle (J <= 0) is a numerical failure, never continued [VSM eq. (48) requires J > 0]")
 {
     const Setup s = deformed_cube(44, 0.0);
-    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber, {});
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber, {});
     Points<3> x = s.X;
     x.row(0) *= -1.0; // a reflection: F_a = diag(-1, 1, 1), J = -1 for every particle
     try {
@@ -148,7 +148,7 @@ TEST_CASE("artificial viscous stress vanishes for rigid rotation and is rho c1 c
 {
     const Setup s = deformed_cube(45, 0.0);
     ModelOptions options{InternalForce::eq43, 1, 1, 0.1, 0.1};
-    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}}, rubber,
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber,
                       options);
     Mat3 W;
     W << 0, -0.3, 0.2, 0.3, 0, -0.1, -0.2, 0.1, 0; // spin

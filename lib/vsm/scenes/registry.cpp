@@ -9,6 +9,7 @@ void register_vsm_scenes(SceneRegistry& registry)
     registry.add(vsm::swinging_cube_scene());
     registry.add(vsm::lblock_scene());
     registry.add(vsm::punch_scene());
+    registry.add(vsm::compress_ball_scene());
 }
 
 } // namespace softgrain
