@@ -142,6 +142,18 @@ Scene compress_ball_scene()
                "VSM ball between two rigid frictionless plates (compare.solid; plates are our penalty "
                "extension): F~ against delta/D",
                compress_ball_binding(), run_compress_ball)
+        .advised_by(
+            {"compare",
+             "compare-solid-vsm",
+             "method_index",
+             {"vsm"},
+             "penalty",
+             "vsm",
+             "per_radius",
+             "R / h of the octant lattice",
+             "fe_error_max",
+             "largest |F~/F~_FE - 1| over 0.01 <= delta/D <= 0.2 against the neo-Hookean finite-element "
+             "ball (data/compare/solid_fe.toml)"})
         .needing(compress_ball_binding().estimate([](const BallCompressionSetup& setup) {
             const double n = setup.per_radius;
             return vsm_particle_memory(std::acos(-1.0) / 6 * cube(n), "particles (pi/6 per_radius^3)");
