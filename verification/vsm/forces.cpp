@@ -87,7 +87,8 @@ TEST_CASE(
                               [](int label, const Vec3& W, double) {
                                   return Vec3(1e-3 * W.y() * (label + 1), 0, -2e-3 * W.x());
                               },
-                              {}, {}};
+                              {},
+                              {}};
         const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, bc, rubber,
                           {InternalForce::eq43, 1, 1});
         const Points<3> f = model.contact_forces(s.x, model.deformation_gradients(s.x, 0.0), 0.0);
@@ -131,7 +132,8 @@ TEST_CASE(
     "an inverted particle (J <= 0) is a numerical failure, never continued [VSM eq. (48) requires J > 0]")
 {
     const Setup s = deformed_cube(44, 0.0);
-    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber, {});
+    const Model model(build_reference_cells(s.X, s.domain, 0.5), s.domain, {all_free, {}, {}, {}}, rubber,
+                      {});
     Points<3> x = s.X;
     x.row(0) *= -1.0; // a reflection: F_a = diag(-1, 1, 1), J = -1 for every particle
     try {
