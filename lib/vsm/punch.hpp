@@ -35,7 +35,8 @@ struct PunchSnapshot
     double strain = 0, t = 0;
     Points<3> x;
     std::vector<double> pressure;  // Cauchy pressure of each particle [Pa]
-    double punch_force = 0;        // downward reaction on the punch [N]
+    double punch_force = 0;        // downward reaction on the punch [N], the paper's D P_a A_ab of eq. (39)
+    double punch_load_total = 0;   // punch_force plus the stabilisation's load on the punch, eq. (46) [N]
     double nonaffine_ratio = 0;    // sqrt(sum |u_loc|^2 / sum |x_ab - X_ab|^2) over real bonds
     double pressure_roughness = 0; // sqrt(sum (p_a - mean_b p_b)^2 / sum p_a^2), b real neighbours of a
 };

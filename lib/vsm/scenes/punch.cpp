@@ -130,6 +130,7 @@ void report_punch(const PunchSetup& setup, const PunchResult& result, double wal
                        snapshot.pressure[static_cast<std::size_t>(a)]});
         const std::string tag = tags[k];
         summary["punch_force_" + tag] = snapshot.punch_force;
+        summary["punch_load_total_" + tag] = snapshot.punch_load_total;
         summary["nonaffine_ratio_" + tag] = snapshot.nonaffine_ratio;
         summary["pressure_roughness_" + tag] = snapshot.pressure_roughness;
         summary["pressure_max_" + tag] =
