@@ -82,7 +82,9 @@ Relaxation relax(const Model& model, Leapfrog& integrator, double damping, doubl
             m << "the ball did not relax within " << budget << " steps: largest unbalanced force " << residual
               << " N against the plate load " << load << " N (relax_tolerance " << tolerance << ")";
             throw NumericalError(m.str(), integrator.state().step,
-                                 "raise the damping towards critical, or the tolerance");
+                                 "a time step above the stability limit (cfl too large: the plate springs "
+                                 "count, sqrt(m_a/k_ab)) keeps the ball oscillating; else the damping is far "
+                                 "from critical");
         }
     }
 }
