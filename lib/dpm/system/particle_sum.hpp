@@ -7,18 +7,22 @@
 // starting from 0, as the serial loop does.
 #pragma once
 
+#include <omp.h>
+
 #include <cstddef>
 #include <vector>
 
 namespace softgrain::dpm {
 
 // energy_of(m): the shape energy of particle m, adding its gradient. `parallel`: split the particles over
-// the OpenMP threads (static schedule).
+// the OpenMP threads (static schedule). With one thread the serial loop runs: the parallel loop's team and
+// buffer cost 5 % of a 3D FIRE run of 8 icosahedral shells (96 vertices) on one thread, and 8-28 % of 2D
+// runs of 768 and 304 vertices (dpm.bench).
 template <class EnergyOf>
 double sum_over_particles(std::size_t particles, bool parallel, const EnergyOf& energy_of)
 {
     double total = 0;
-    if (!parallel) {
+    if (!parallel || omp_get_max_threads() == 1) {
         for (std::size_t m = 0; m < particles; ++m)
             total += energy_of(m);
         return total;
