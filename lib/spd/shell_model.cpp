@@ -187,8 +187,9 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     }
     if (stale) raise_flag(flags.list_stale);
 #pragma omp barrier
-    if (flags.list_stale) on_one_thread(flags.failure, [&] { contacts_.update_candidates(view(), steps_); });
-    if (flags.failure) return; // every thread sees it after the barrier of the single construct
+    if (flags.list_stale)
+        on_one_thread(flags.list_failure, [&] { contacts_.update_candidates(view(), steps_); });
+    if (flags.list_failure) return; // written only in the single: every thread sees it after its barrier
     const int n_shells = static_cast<int>(shells_.size());
     const long n_groups = contacts ? contacts_.groups() : 0;
 #pragma omp for schedule(dynamic, 4) nowait
@@ -209,8 +210,8 @@ void ShellModel::forces_in_region(double dt, RegionFlags& flags, BeforeVertex&& 
     }
     if (overlap) raise_flag(flags.overlap); // acted on after the region
     if (flags.failure) return;              // set before the barrier that ends the loop: every thread sees it
-    if (!links_.empty()) on_one_thread(flags.failure, [&] { links_.add_forces(view(), f_); });
-    if (flags.failure) return;
+    if (!links_.empty()) on_one_thread(flags.links_failure, [&] { links_.add_forces(view(), f_); });
+    if (flags.links_failure) return;
 #pragma omp for schedule(static) nowait // the region ends next, or its owner goes on with the same vertices
     for (int i = 0; i < n; ++i) {
         if (contacts)
@@ -279,7 +280,7 @@ void ShellModel::step(double dt, double damping)
                 });
             // The checks of the new state, each thread on the vertices it has just kicked (the static
             // schedule of the gather loop); a tight loop of its own costs less than the checks inside it.
-            if (!flags.failure) {
+            if (!flags.first_failure()) { // no slot is written after the last barrier of the evaluation
 #pragma omp for schedule(static) nowait
                 for (int i = 0; i < vertices(); ++i) {
                     non_finite = non_finite || !vertex_finite(i);
@@ -299,8 +300,8 @@ void ShellModel::step(double dt, double damping)
 // state (a contact with an element of non-finite length) failed because of it: the state is the diagnosis.
 void ShellModel::throw_region_failure(const RegionFlags& flags, double dt) const
 {
-    if (flags.failure) {
-        if (first_non_finite_vertex() < 0) std::rethrow_exception(flags.failure);
+    if (flags.first_failure()) {
+        if (first_non_finite_vertex() < 0) std::rethrow_exception(flags.first_failure());
         throw_non_finite(dt);
     }
     if (flags.overlap) contacts_.throw_overlap(view(), steps_);

@@ -166,8 +166,18 @@ class ShellModel
         bool overlap = false;    // a contact overlaps beyond 95% of r_i + r_j (exit 3 after the region)
         bool non_finite = false; // a position or velocity is not finite (exit 3)
         bool too_long = false;   // a vertex moved farther than its contact radius in one step (exit 3)
-        std::exception_ptr failure;
-        long failed_iteration = -1; // of a work-shared loop: the lowest one that failed is kept
+        // One slot per stage that can fail, each written at one place only: a thread that has passed a
+        // stage's barrier may run ahead and fail in the next stage while another thread still reads the
+        // previous stage's slot, and both must take the same branch (else their barriers no longer pair).
+        std::exception_ptr list_failure;  // rebuilding the contact candidates
+        std::exception_ptr failure;       // the contact groups (work-shared loop)
+        std::exception_ptr links_failure; // the cohesive links
+        long failed_iteration = -1;       // of the contact groups: the lowest one that failed is kept
+        // The first failure in the order a serial evaluation meets them; null when none.
+        const std::exception_ptr& first_failure() const
+        {
+            return list_failure ? list_failure : failure ? failure : links_failure;
+        }
     };
     // The force evaluation inside an open parallel region, with two per-vertex hooks that let a time step
     // share its loops over the vertices: before(i) runs before vertex i's force is reset, after(i) once its
