@@ -82,19 +82,6 @@ int zero_modes_beyond_rattlers(const DpmSystem& system, const Eigen::MatrixXd& z
     return static_cast<int>((svd.singularValues().array() > 1e-4).count());
 }
 
-FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options)
-{
-    return fire_minimise(
-        x,
-        [&system](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
-            f.setZero(y.size());
-            const double energy = total_energy(system, y, &f, nullptr);
-            f = -f;
-            return energy;
-        },
-        options);
-}
-
 double largest_force(const EnergyWithDerivatives& energy, const Eigen::VectorXd& x)
 {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());

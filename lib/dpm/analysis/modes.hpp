@@ -9,7 +9,6 @@
 // a mode (Fig. 9.14c).
 #pragma once
 
-#include "core/fire.hpp"
 #include "dpm/system/system.hpp"
 #include "dpm/system/system3d.hpp"
 
@@ -115,9 +114,6 @@ inline bool quartic_energy_change(double delta_u, double lambda, double dr, doub
 {
     return delta_u > factor * 0.5 * lambda * dr * dr;
 }
-
-// FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
-FireResult relax_fire(const DpmSystem& system, Eigen::VectorXd& x, const FireOptions& options);
 
 // energy(x, gradient, hessian): the value, adding the gradient and the Hessian when they are not null.
 using EnergyWithDerivatives =

@@ -192,23 +192,43 @@ double smooth_vertex_surface_energy3d(const DpmSystem3d& s, int mu, int beta, co
     return ordered_pair_energy(s, bounding_spheres(s, x), mu, beta, x, nullptr, nullptr, nullptr);
 }
 
-std::vector<int> smooth_contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+namespace {
+
+// Calls touch(i, mu, beta) for every vertex i of particle mu within sigma_mb of the surface of an image of
+// particle beta (mu != beta), in (mu, beta, image, i) order: the contacts of the smooth interaction.
+template <class Touch>
+void for_each_smooth_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Touch& touch)
 {
-    std::vector<int> counts(s.particles.size(), 0);
     const std::vector<Sphere> spheres = bounding_spheres(s, x);
     const int n = static_cast<int>(s.particles.size());
     for (int mu = 0; mu < n; ++mu)
         for (int beta = 0; beta < n; ++beta) {
             if (mu == beta) continue;
-            for_each_vertex_near(
-                s, spheres, mu, beta, x, [&](int i, const Eigen::Vector3d& shift, double sigma) {
-                    vertex_surface(s, i, mu, beta, shift, 0.0, sigma, x, nullptr, nullptr, nullptr, [&] {
-                        ++counts[mu];
-                        ++counts[beta];
-                    });
-                });
+            for_each_vertex_near(s, spheres, mu, beta, x,
+                                 [&](int i, const Eigen::Vector3d& shift, double sigma) {
+                                     vertex_surface(s, i, mu, beta, shift, 0.0, sigma, x, nullptr, nullptr,
+                                                    nullptr, [&] { touch(i, mu, beta); });
+                                 });
         }
+}
+
+} // namespace
+
+std::vector<int> smooth_contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    std::vector<int> counts(s.particles.size(), 0);
+    for_each_smooth_contact(s, x, [&](int, int mu, int beta) {
+        ++counts[mu];
+        ++counts[beta];
+    });
     return counts;
+}
+
+std::vector<std::pair<int, int>> smooth_touching_pairs3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    std::vector<std::pair<int, int>> pairs;
+    for_each_smooth_contact(s, x, [&](int i, int, int beta) { pairs.emplace_back(i, beta); });
+    return pairs;
 }
 
 } // namespace softgrain::dpm

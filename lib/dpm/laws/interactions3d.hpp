@@ -40,6 +40,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -178,5 +179,9 @@ double smooth_vertex_surface_energy3d(const DpmSystem3d& system, int mu, int bet
 // number of its own mesh's vertex-surface contacts with the vertices of others (each contact counted for
 // both particles, as contact_counts3d does for vertex pairs).
 std::vector<int> smooth_contact_counts3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
+
+// The smooth contacts as (vertex i, particle beta): i within sigma_mb of an image of beta's surface, in the
+// order of smooth_contact_counts3d (one entry per image touched).
+std::vector<std::pair<int, int>> smooth_touching_pairs3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
 } // namespace softgrain::dpm

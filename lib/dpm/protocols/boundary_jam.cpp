@@ -4,6 +4,7 @@
 #include "core/fire.hpp"
 #include "core/rng.hpp"
 #include "dpm/analysis/modes.hpp"
+#include "dpm/relax/newton_relax.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 #include "dpm/protocols/compress.hpp"
 
 #include "core/errors.hpp"
+#include "core/fire.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/laws/spring_network.hpp"
 

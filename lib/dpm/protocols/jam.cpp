@@ -189,13 +189,7 @@ JamResult jam(const JamOptions& options)
     const auto relax = [&](long step_index) {
         if (rough_disks) return relax_rigid(step_index);
         const RelaxResult r = dpm::relax(s, out.x, relax_options);
-        out.fire_iterations += r.fire_iterations;
-        out.force_evaluations += r.force_evaluations;
-        out.relax_seconds += r.seconds;
-        out.fire_seconds += r.fire_seconds;
-        out.newton_steps += r.newton_steps;
-        out.factorizations += r.factorizations;
-        out.handovers += r.handovers;
+        add_relaxation_cost(r, out);
         if (!r.converged)
             throw NumericalError("relaxation during compression (" + relax_shortfall(r, relax_options) + ")",
                                  step_index,

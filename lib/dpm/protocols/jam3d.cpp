@@ -9,19 +9,6 @@
 
 namespace softgrain::dpm {
 
-FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options)
-{
-    return fire_minimise(
-        x,
-        [&system](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
-            f.setZero(y.size());
-            const double energy = total_energy3d(system, y, &f, nullptr);
-            f = -f;
-            return energy;
-        },
-        options);
-}
-
 namespace {
 
 double mean_edge_length(const TriangleMesh& mesh)
@@ -122,17 +109,16 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
     fire.max_iterations = options.fire_budget;
+    const RelaxOptions relax_options{options.relaxation, fire};
     const auto relax = [&](long step_index) {
-        const FireResult r = relax_fire3d(s, out.x, fire);
-        out.fire_iterations += r.iterations;
-        out.force_evaluations += r.force_evaluations;
-        out.relax_seconds += r.seconds;
+        const RelaxResult r = dpm::relax(s, out.x, relax_options);
+        add_relaxation_cost(r, out);
         if (!r.converged)
-            throw NumericalError("relaxation during 3D compression (" + fire_shortfall(r, fire) + ")",
-                                 step_index,
-                                 "force tolerance too small for the pressure; raise pressure_onset or "
-                                 "fire_budget");
-        return r.iterations;
+            throw NumericalError(
+                "relaxation during 3D compression (" + relax_shortfall(r, relax_options) + ")", step_index,
+                "force tolerance too small for the pressure; raise pressure_onset or "
+                "fire_budget");
+        return r.fire_iterations;
     };
     const auto current_pressure = [&] { return pressure3d(stress_tensor3d(s, out.x)) / out.pressure_unit; };
     relax(0);

@@ -19,6 +19,7 @@
 #include "core/resources.hpp"
 #include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/protocols/single_particle3d.hpp"
+#include "dpm/relax/newton_relax.hpp"
 #include "dpm/system/system3d.hpp"
 
 #include <cstdint>
@@ -51,6 +52,8 @@ struct Jam3dOptions
     // The Hessian of FIRE's time step and of the saddle test: dense up to dense_hessian_limit3d degrees of
     // freedom, sparse above (packing_hessian3d.hpp); tests force either.
     HessianStorage hessian = HessianStorage::automatic;
+    // FIRE alone, or FIRE handing over to the Newton finisher where it crawls (newton_relax.hpp).
+    Relaxation relaxation = Relaxation::fire;
 };
 
 // A relaxed packing at one target pressure.
@@ -73,8 +76,12 @@ struct Jam3dResult
     double phi = 0;                 // packing_fraction3d
     double pressure = 0;            // P [k_v v0]
     long fire_iterations = 0;
-    long force_evaluations = 0; // energy and gradient evaluations of all relaxations
-    double relax_seconds = 0;   // wall time of all relaxations (FIRE)
+    long force_evaluations = 0; // energy and gradient evaluations of all FIRE runs
+    double relax_seconds = 0;   // wall time of all relaxations (FIRE and the Newton finisher)
+    double fire_seconds = 0;    // of which FIRE
+    long newton_steps = 0;      // accepted steps of the Newton finisher (relaxation = fire_newton)
+    long factorizations = 0;    // its sparse LDL^T factorisations
+    long handovers = 0;         // relaxations FIRE handed over to it
     long box_steps = 0;
     int saddle_escapes = 0; // moves off a saddle, over all targets
     long window_jumps = 0;  // overshoots of a target window kept and decompressed (Jam3dOptions::jump_step)
@@ -88,8 +95,5 @@ Jam3dResult jam3d(const Jam3dOptions& options);
 // `dense_matrices` dense 3N x 3N matrices a scene needs after it (a dense spectrum: the matrix and its
 // eigenvectors; 0: none).
 MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int dense_matrices);
-
-// FIRE (core) on the total energy of a 3D system.
-FireResult relax_fire3d(const DpmSystem3d& system, Eigen::VectorXd& x, const FireOptions& options);
 
 } // namespace softgrain::dpm

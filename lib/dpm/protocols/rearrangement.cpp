@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/analysis/stress.hpp"
+#include "dpm/relax/newton_relax.hpp"
 
 #include <cmath>
 #include <string>

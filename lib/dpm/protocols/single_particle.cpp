@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "dpm/analysis/modes.hpp"
+#include "dpm/relax/newton_relax.hpp"
 
 #include <string>
 

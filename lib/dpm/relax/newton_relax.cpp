@@ -19,6 +19,9 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
+// Translations sampled by energy_round_off.
+constexpr int round_off_samples = 8;
+
 double seconds_from(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -29,16 +32,28 @@ double rms(const Eigen::VectorXd& force)
     return std::sqrt(force.squaredNorm() / static_cast<double>(std::max<Eigen::Index>(1, force.size())));
 }
 
-// U and F = -grad U at x.
-double energy_and_force(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd& force)
+// The dimension of a relaxation: the system's energy, Hessian and touching pairs, and its translations.
+double total_energy_of(const DpmSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient)
 {
-    force.setZero(x.size());
-    const double energy = total_energy(system, x, &force, nullptr);
-    force = -force;
-    return energy;
+    return total_energy(system, x, gradient, nullptr);
 }
 
-// The touching vertex pairs (i, j) at x: what a step may change outside the Hessian's model.
+double total_energy_of(const DpmSystem3d& system, const Eigen::VectorXd& x, Eigen::VectorXd* gradient)
+{
+    return total_energy3d(system, x, gradient, nullptr);
+}
+
+Eigen::SparseMatrix<double> hessian_of(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    return sparse_dynamical_matrix(system, x);
+}
+
+Eigen::SparseMatrix<double> hessian_of(const DpmSystem3d& system, const Eigen::VectorXd& x)
+{
+    return sparse_dynamical_matrix3d(system, x);
+}
+
+// The touching pairs at x: what a step may change outside the Hessian's model.
 std::vector<std::pair<int, int>> touching_pairs(const DpmSystem& system, const Eigen::VectorXd& x)
 {
     std::vector<std::pair<int, int>> pairs;
@@ -48,10 +63,43 @@ std::vector<std::pair<int, int>> touching_pairs(const DpmSystem& system, const E
     return pairs;
 }
 
-double smallest_vertex_diameter(const DpmSystem& system)
+std::vector<std::pair<int, int>> touching_pairs(const DpmSystem3d& system, const Eigen::VectorXd& x)
+{
+    return touching_pairs3d(system, x);
+}
+
+template <RelaxableSystem System>
+constexpr int dimension_of = std::same_as<System, DpmSystem> ? 2 : 3;
+
+// The system with its anchors moved by `shift` (2D; a 3D system has none).
+DpmSystem with_anchors_moved(const DpmSystem& system, const Eigen::Vector2d& shift)
+{
+    DpmSystem moved = system;
+    for (Anchor& a : moved.anchors)
+        a.position += shift;
+    return moved;
+}
+
+const DpmSystem3d& with_anchors_moved(const DpmSystem3d& system, const Eigen::Vector3d&)
+{
+    return system;
+}
+
+// U and F = -grad U at x.
+template <RelaxableSystem System>
+double energy_and_force(const System& system, const Eigen::VectorXd& x, Eigen::VectorXd& force)
+{
+    force.setZero(x.size());
+    const double energy = total_energy_of(system, x, &force);
+    force = -force;
+    return energy;
+}
+
+template <RelaxableSystem System>
+double smallest_vertex_diameter(const System& system)
 {
     double sigma = std::numeric_limits<double>::infinity();
-    for (const Particle& p : system.particles)
+    for (const auto& p : system.particles)
         sigma = std::min(sigma, p.sigma);
     return sigma;
 }
@@ -99,29 +147,37 @@ Eigen::VectorXd regularised_newton_step(const Eigen::SparseMatrix<double>& hessi
     return step;
 }
 
-double energy_round_off(const DpmSystem& system, const Eigen::VectorXd& x, double energy)
+template <RelaxableSystem System>
+FireResult relax_fire(const System& system, Eigen::VectorXd& x, const FireOptions& options)
 {
-    DpmSystem moved = system;
-    double largest = 0;
-    const double sigma = smallest_vertex_diameter(system);
-    // Evaluated into vectors here: a braced list of the products would hold Eigen expressions that refer
-    // to temporaries gone before the loop reads them (valgrind: uninitialised shifts, 1 in 5 runs failing).
-    const std::array<Eigen::Vector2d, 2> shifts{
-        Eigen::Vector2d(std::numbers::sqrt2 - 1, std::numbers::sqrt3 - 1) * sigma,
-        Eigen::Vector2d(std::numbers::pi - 3, std::numbers::e - 2) * sigma};
-    for (const Eigen::Vector2d& shift : shifts) {
-        Eigen::VectorXd y = x;
-        for (Eigen::Index v = 0; v < x.size() / 2; ++v)
-            y.segment<2>(2 * v) += shift;
-        moved.anchors = system.anchors;
-        for (Anchor& a : moved.anchors)
-            a.position += shift;
-        largest = std::max(largest, std::abs(total_energy(moved, y, nullptr, nullptr) - energy));
-    }
-    return 4 * largest + 16 * eps * std::abs(energy);
+    return fire_minimise(
+        x, [&system](const Eigen::VectorXd& y, Eigen::VectorXd& f) { return energy_and_force(system, y, f); },
+        options);
 }
 
-NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const NewtonOptions& options)
+template <RelaxableSystem System>
+double energy_round_off(const System& system, const Eigen::VectorXd& x, double energy)
+{
+    constexpr int D = dimension_of<System>;
+    using Shift = Eigen::Matrix<double, D, 1>;
+    const double sigma = smallest_vertex_diameter(system);
+    // Translations by the fractional parts of k (sqrt 2, sqrt 3, sqrt 5) sigma (an additive recurrence of
+    // irrational steps), so that no coordinate moves by a round number and no two shifts repeat.
+    const Eigen::Vector3d step(std::numbers::sqrt2, std::numbers::sqrt3, std::sqrt(5.0));
+    double squares = 0;
+    for (int k = 1; k <= round_off_samples; ++k) {
+        const Eigen::Vector3d fraction = (k * step).unaryExpr([](double v) { return v - std::floor(v); });
+        const Shift shift = fraction.head<D>() * sigma;
+        Eigen::VectorXd y = x;
+        y.reshaped(D, x.size() / D).colwise() += shift;
+        const double change = total_energy_of(with_anchors_moved(system, shift), y, nullptr) - energy;
+        squares += change * change;
+    }
+    return 6 * std::sqrt(squares / round_off_samples) + 16 * eps * std::abs(energy);
+}
+
+template <RelaxableSystem System>
+NewtonResult newton_finish(const System& system, Eigen::VectorXd& x, const NewtonOptions& options)
 {
     const auto start = std::chrono::steady_clock::now();
     NewtonResult result;
@@ -151,7 +207,7 @@ NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const Ne
         if (rms(force) < options.force_tolerance) return finish(true, "");
         if (factorised >= options.max_steps) return finish(false, "no convergence in the step budget");
         if (!hessian_current) {
-            hessian = sparse_dynamical_matrix(system, x);
+            hessian = hessian_of(system, x);
             ++result.force_evaluations;
             bound = gershgorin_bound(hessian);
             if (!std::isfinite(bound))
@@ -214,7 +270,8 @@ NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const Ne
     }
 }
 
-RelaxResult relax(const DpmSystem& system, Eigen::VectorXd& x, const RelaxOptions& options)
+template <RelaxableSystem System>
+RelaxResult relax(const System& system, Eigen::VectorXd& x, const RelaxOptions& options)
 {
     const auto start = std::chrono::steady_clock::now();
     RelaxResult result;
@@ -271,6 +328,15 @@ RelaxResult relax(const DpmSystem& system, Eigen::VectorXd& x, const RelaxOption
     result.seconds = seconds_from(start);
     return result;
 }
+
+template FireResult relax_fire(const DpmSystem&, Eigen::VectorXd&, const FireOptions&);
+template FireResult relax_fire(const DpmSystem3d&, Eigen::VectorXd&, const FireOptions&);
+template double energy_round_off(const DpmSystem&, const Eigen::VectorXd&, double);
+template double energy_round_off(const DpmSystem3d&, const Eigen::VectorXd&, double);
+template NewtonResult newton_finish(const DpmSystem&, Eigen::VectorXd&, const NewtonOptions&);
+template NewtonResult newton_finish(const DpmSystem3d&, Eigen::VectorXd&, const NewtonOptions&);
+template RelaxResult relax(const DpmSystem&, Eigen::VectorXd&, const RelaxOptions&);
+template RelaxResult relax(const DpmSystem3d&, Eigen::VectorXd&, const RelaxOptions&);
 
 std::string relax_shortfall(const RelaxResult& result, const RelaxOptions& options)
 {

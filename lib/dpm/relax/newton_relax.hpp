@@ -1,5 +1,7 @@
-// Relaxation of a 2D DPM system to mechanical equilibrium (issue 19): FIRE alone, or FIRE that hands over
-// to a regularised Newton finisher on the sparse dynamical matrix (eq. 9.28) where it crawls.
+// Relaxation of a DPM system, 2D (DpmSystem) or 3D (DpmSystem3d), to mechanical equilibrium (issue 19): FIRE
+// alone, or FIRE that hands over to a regularised Newton finisher on the sparse dynamical matrix (eq. 9.28,
+// sparse_dynamical_matrix and sparse_dynamical_matrix3d) where it crawls. One code for both dimensions: the
+// dimension enters only through the system's energy, Hessian and touching pairs.
 //
 // Finisher (regularised Newton / Levenberg-Marquardt with a trust-region update of the shift: Li,
 // Fukushima, Qi & Yamashita, Comput. Optim. Appl. 28, 131 (2004); Nocedal & Wright, Numerical Optimization,
@@ -43,12 +45,22 @@
 
 #include "core/fire.hpp"
 #include "dpm/system/system.hpp"
+#include "dpm/system/system3d.hpp"
 
 #include <Eigen/SparseCore>
+#include <concepts>
 #include <string>
 #include <vector>
 
 namespace softgrain::dpm {
+
+// The systems a relaxation takes: 2D or 3D.
+template <class System>
+concept RelaxableSystem = std::same_as<System, DpmSystem> || std::same_as<System, DpmSystem3d>;
+
+// FIRE (core) on the total energy; returns its result. Iterations are the cost measure.
+template <RelaxableSystem System>
+FireResult relax_fire(const System& system, Eigen::VectorXd& x, const FireOptions& options);
 
 enum class Relaxation { fire, fire_newton };
 Relaxation relaxation_from_name(const std::string& name); // "fire" | "fire_newton"; InputError otherwise
@@ -86,13 +98,19 @@ Eigen::VectorXd regularised_newton_step(const Eigen::SparseMatrix<double>& hessi
                                         int& factorizations, int step_index);
 
 // The finisher from x (x becomes the lowest-energy point reached).
-NewtonResult newton_finish(const DpmSystem& system, Eigen::VectorXd& x, const NewtonOptions& options);
+template <RelaxableSystem System>
+NewtonResult newton_finish(const System& system, Eigen::VectorXd& x, const NewtonOptions& options);
 
-// Round-off of a computed total energy U at x: the coordinate differences r_j - r_i of every term carry an
-// error eps max|r|, which moves each term by its force times that; summed over the terms, bounded by
-// 16 eps (U + sum_v (|grad_v U_shape| + |grad_v U_interaction| + |grad_v U_anchor|) |r_v|_inf), 16 for the
-// few terms a vertex takes part in. Energy differences below it are noise.
-double energy_round_off(const DpmSystem& system, const Eigen::VectorXd& x, double energy);
+// Round-off of a difference of two computed total energies near x, measured: U is invariant under a rigid
+// translation of every vertex (and anchor), so the change of the computed U under a translation (by
+// irrational fractions of the smallest vertex diameter) is round-off alone, a sample of the spread s of such
+// a difference. The bound is 6 times the rms of 8 samples plus 16 eps |U|: a round-off difference passes
+// 6 s with probability 2e-9 if it is normal, and 4.2 s (the sample rms 30 % low, 2.5 times its relative
+// spread for 8 samples) with 3e-5. Energy differences below it are noise. (One or two samples are not
+// enough: on 4 shell icosahedra two of them gave 2.7e-18 where the differences the finisher met reached
+// 1.1e-17, and it rejected 17 good steps; verification/dpm/relax/newton_relax.cpp.)
+template <RelaxableSystem System>
+double energy_round_off(const System& system, const Eigen::VectorXd& x, double energy);
 
 struct RelaxOptions
 {
@@ -116,7 +134,22 @@ struct RelaxResult
     std::string newton_stop_reason;                // of the last unconverged finisher, if any
 };
 
-RelaxResult relax(const DpmSystem& system, Eigen::VectorXd& x, const RelaxOptions& options);
+template <RelaxableSystem System>
+RelaxResult relax(const System& system, Eigen::VectorXd& x, const RelaxOptions& options);
+
+// Adds a relaxation's cost to a protocol's tallies: the fields fire_iterations, force_evaluations,
+// relax_seconds, fire_seconds, newton_steps, factorizations and handovers (JamResult, Jam3dResult).
+template <class Tally>
+void add_relaxation_cost(const RelaxResult& r, Tally& tally)
+{
+    tally.fire_iterations += r.fire_iterations;
+    tally.force_evaluations += r.force_evaluations;
+    tally.relax_seconds += r.seconds;
+    tally.fire_seconds += r.fire_seconds;
+    tally.newton_steps += r.newton_steps;
+    tally.factorizations += r.factorizations;
+    tally.handovers += r.handovers;
+}
 
 // Why a relaxation stopped unconverged (fire_shortfall, and the finisher's last stop reason).
 std::string relax_shortfall(const RelaxResult& result, const RelaxOptions& options);

@@ -1,7 +1,7 @@
 // dpm.bench: what it costs to jam one packing and to take its spectrum (issue 19), for `make bench`.
 //
 // dimension = 2: the dpm.jam protocol (jam.hpp) with dpm.jam's parameters. dimension = 3: the 3D protocol
-// (jam3d.hpp) with the same parameters mapped onto it: model, particles, seed, pressure_onset,
+// (jam3d.hpp) with the same parameters mapped onto it: model, particles, seed, relaxation, pressure_onset,
 // pressure_max and pressures (in k_v v0), A0 (as A0^3D) as they are; both particle sizes on one mesh
 // whose vertex count nodes_small = nodes_large names it (mesh_for_nodes); rough contacts as in 2D; the rest
 // (stiffnesses, FIRE budget, saddle escapes, size ratio 1.4) at the protocol's defaults; kl_surface has no
@@ -10,9 +10,9 @@
 // fire_seconds (their FIRE part), fire_iterations, force_evaluations (energy and gradient evaluations of the
 // FIRE runs: one per FIRE iteration and one at the start of each), force_evaluations_per_second and
 // vertex_force_evaluations_per_second (over fire_seconds: FIRE's rate), newton_handovers, newton_steps and
-// newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp; 0 with FIRE alone
-// and in 3D), spectrum_seconds, degrees_of_freedom; the run's peak memory is peak_memory_mib. Costs are
-// measured, never asserted (verification/dpm/protocols/bench.cpp checks that the keys agree with each other).
+// newton_factorizations (the Newton finisher of relaxation = fire_newton, newton_relax.hpp, in either
+// dimension; 0 with FIRE alone), spectrum_seconds, degrees_of_freedom; the run's peak memory is
+// peak_memory_mib. Costs are measured, never asserted (verification/dpm/protocols/bench.cpp checks that the keys agree with each other).
 #include "dpm/scenes/scenes.hpp"
 
 #include "core/errors.hpp"
@@ -35,6 +35,7 @@ struct BenchOptions
 {
     JamOptions jam;
     int dimension = 2;
+    HessianStorage hessian3d = HessianStorage::automatic;
 };
 
 // What a jamming run cost, in either dimension.
@@ -65,7 +66,7 @@ std::string mesh_for_nodes(const JamOptions& options)
 }
 
 // The 3D protocol's options for dpm.jam's (see the header comment).
-Jam3dOptions jam_options_3d(const JamOptions& options)
+Jam3dOptions jam_options_3d(const JamOptions& options, HessianStorage hessian)
 {
     const std::optional<ShapeModel> model = shape_model(options.model);
     if (!model)
@@ -82,6 +83,8 @@ Jam3dOptions jam_options_3d(const JamOptions& options)
     options3d.A0_floppy = options.A0_floppy;
     options3d.seed = options.seed;
     options3d.interaction = InteractionKind::rough;
+    options3d.relaxation = options.relaxation;
+    options3d.hessian = hessian;
     return options3d;
 }
 
@@ -97,9 +100,16 @@ OptionBinding<BenchOptions> bench_binding()
             "unused")
         .at_least(2)
         .at_most(3);
+    binding.choice(&BenchOptions::hessian3d, "hessian3d",
+                   {{"automatic", HessianStorage::automatic},
+                    {"dense", HessianStorage::dense},
+                    {"sparse", HessianStorage::sparse}},
+                   "dimension = 3: the Hessian of the protocol's FIRE time step and saddle tests "
+                   "(packing_hessian3d.hpp): dense up to 2048 degrees of freedom and sparse above, or either "
+                   "throughout");
     // In 3D the model and the vertex counts must name 3D particles: refused before anything runs.
     binding.check([](const BenchOptions& options) {
-        if (options.dimension == 3) jam_options_3d(options.jam);
+        if (options.dimension == 3) jam_options_3d(options.jam, options.hessian3d);
     });
     return binding;
 }
@@ -130,13 +140,10 @@ JamCost measure(const Jam& jam_packing)
     cost.jam_cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     cost.jam_seconds = seconds_since(start);
     cost.relax_seconds = result.relax_seconds;
-    cost.fire_seconds = result.relax_seconds; // 3D: FIRE alone
-    if constexpr (requires { result.newton_steps; }) {
-        cost.fire_seconds = result.fire_seconds;
-        cost.newton_handovers = result.handovers;
-        cost.newton_steps = result.newton_steps;
-        cost.newton_factorizations = result.factorizations;
-    }
+    cost.fire_seconds = result.fire_seconds;
+    cost.newton_handovers = result.handovers;
+    cost.newton_steps = result.newton_steps;
+    cost.newton_factorizations = result.factorizations;
     cost.fire_iterations = result.fire_iterations;
     cost.force_evaluations = result.force_evaluations;
     cost.degrees_of_freedom = result.x.size();
@@ -156,7 +163,7 @@ void run_bench(const BenchOptions& options, RunContext& context)
         cost = measure([&jam_options] { return jam(jam_options); });
         cost.vertices = cost.degrees_of_freedom / 2;
     } else {
-        const Jam3dOptions jam3d_options = jam_options_3d(jam_options);
+        const Jam3dOptions jam3d_options = jam_options_3d(jam_options, options.hessian3d);
         cost = measure([&jam3d_options] { return jam3d(jam3d_options); });
         cost.vertices = cost.degrees_of_freedom / 3;
     }

@@ -107,6 +107,7 @@ OptionBinding<Modes3dOptions> modes3d_binding()
                  "compression to P_t again (decision dpm-packing-minimum); 0: the protocol's "
                  "first state is kept. Summary saddle_escapes: the moves made")
         .non_negative();
+    bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "packing: the 3D jamming protocol");
     // A count of FIRE steps (a long in the protocol) with the range it always had.
     binding
         .count(jam(&Jam3dOptions::fire_budget), "fire_budget", "1",

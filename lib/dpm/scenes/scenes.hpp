@@ -45,6 +45,18 @@ namespace softgrain::dpm {
 // exactly, so they would report a number that nothing checks.
 constexpr std::size_t minimum_exponent_points = 3;
 
+// The minimiser of a jamming protocol (2D or 3D) after each box step, bound to `relaxation` (a field of
+// Options); `note` adds what the scene restricts.
+template <class Options, class RelaxationField>
+void bind_relaxation(OptionBinding<Options>& binding, RelaxationField relaxation, const std::string& note)
+{
+    binding.choice(relaxation, "relaxation",
+                   {{"fire", Relaxation::fire}, {"fire_newton", Relaxation::fire_newton}},
+                   "minimiser after each box step: FIRE alone, or FIRE handing over to a regularised Newton "
+                   "finisher on the sparse Hessian where it crawls (newton_relax.hpp" +
+                       (note.empty() ? std::string() : "; " + note) + ")");
+}
+
 // The parameters of the jamming protocol (jam.hpp) as dpm.jam declares them, bound to the JamOptions that
 // `jam` (a field of Options) holds: dpm.jam's own, the protocol dpm.bench times and the one dpm.shear_modulus
 // shears. The floppy particles' A0 >= A_min(N) of both sizes is checked by the protocol itself (jam()).
@@ -82,11 +94,7 @@ void bind_jam_protocol(OptionBinding<Options>& binding, JamField jam)
         .real(field(&JamOptions::kl_surface), "kl_surface", "k_c",
               "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
         .non_negative();
-    binding.choice(
-        field(&JamOptions::relaxation), "relaxation",
-        {{"fire", Relaxation::fire}, {"fire_newton", Relaxation::fire_newton}},
-        "minimiser after each box step: FIRE alone, or FIRE handing over to a regularised Newton "
-        "finisher on the sparse Hessian where it crawls (newton_relax.hpp; rough_disk: fire only)");
+    bind_relaxation(binding, field(&JamOptions::relaxation), "rough_disk: fire only");
 }
 
 // A bidisperse packing of the parameters particles, nodes_small and nodes_large: half small and half large

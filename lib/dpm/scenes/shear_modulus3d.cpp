@@ -116,6 +116,7 @@ OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
               "largest force component allowed after each Newton minimisation (Newton stops "
               "at round-off, usually far below)")
         .positive();
+    bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "the jamming protocol");
     binding.seed(jam(&Jam3dOptions::seed), "seed", "seed of the random placement of the first packing");
     binding.check(check_floppy_A0);
     binding.check([](const ShearModulus3dOptions& options) {

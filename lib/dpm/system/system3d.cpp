@@ -94,6 +94,15 @@ std::vector<int> contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x
     return counts;
 }
 
+std::vector<std::pair<int, int>> touching_pairs3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    if (s.interaction == InteractionKind::smooth) return smooth_touching_pairs3d(s, x);
+    std::vector<std::pair<int, int>> pairs;
+    if (s.interaction == InteractionKind::none) return pairs;
+    for_each_contact(s, x, [&](int i, int j, double, const Eigen::Vector3d&) { pairs.emplace_back(i, j); });
+    return pairs;
+}
+
 double total_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                       HessianSink hessian)
 {

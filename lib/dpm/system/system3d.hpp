@@ -23,6 +23,7 @@
 #include "dpm/system/vertex_pairs3d.hpp"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace softgrain::dpm {
@@ -99,5 +100,10 @@ double packing_fraction3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 // Number of vertex contacts (r_ij < sigma_mb) of each particle; smooth: vertex-surface contacts
 // (smooth_contact_counts3d).
 std::vector<int> contact_counts3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
+
+// The touching pairs at x: rough, the vertex pairs (i, j) of contact_counts3d in (i, j) order; smooth, the
+// (vertex, particle) pairs of smooth_touching_pairs3d. What a relaxation step may change outside the
+// Hessian's model (newton_relax.hpp).
+std::vector<std::pair<int, int>> touching_pairs3d(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
 } // namespace softgrain::dpm

@@ -4,6 +4,7 @@
 #include "dpm/protocols/rearrangement.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/analysis/stress.hpp"
+#include "dpm/relax/newton_relax.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>

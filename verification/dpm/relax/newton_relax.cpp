@@ -1,14 +1,19 @@
 // The Newton finisher of the relaxation (newton_relax.hpp, issue 19): its minimum against FIRE run to a
-// tighter tolerance, its quadratic convergence, steps that make and break contacts, and its NumericalError.
+// tighter tolerance (2D and 3D), its quadratic convergence (2D and 3D), steps that make and break contacts,
+// and its NumericalError.
 #include "dpm/relax/newton_relax.hpp"
 #include "core/errors.hpp"
 #include "dpm/analysis/modes.hpp"
 #include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/jam3d.hpp"
+#include "dpm/system/scale_packing.hpp"
 #include "support/tolerance.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <type_traits>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
@@ -30,17 +35,147 @@ JamResult small_packing(double pressure = 1e-5)
     return jam(o);
 }
 
+// A small jammed 3D packing (4 elastic shell icosahedra at the pressure P k_v v0), FIRE alone.
+Jam3dResult small_packing3d(double pressure)
+{
+    Jam3dOptions o;
+    o.model = ShapeModel::shell;
+    o.particles = 4;
+    o.mesh = "icosahedron";
+    o.pressure_onset = o.pressure_max = pressure;
+    o.pressures = 0;
+    return jam3d(o);
+}
+
+template <class System>
+constexpr int dimension_of = std::is_same_v<System, DpmSystem> ? 2 : 3;
+
 // The displacement without its uniform translation (an exact zero mode of a periodic packing, along which
 // neither minimiser moves the packing except by round-off).
+template <int D>
 Eigen::VectorXd without_translation(Eigen::VectorXd d)
 {
-    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (Eigen::Index v = 0; v < d.size() / 2; ++v)
-        mean += d.segment<2>(2 * v);
-    mean /= static_cast<double>(d.size() / 2);
-    for (Eigen::Index v = 0; v < d.size() / 2; ++v)
-        d.segment<2>(2 * v) -= mean;
+    auto columns = d.reshaped(D, d.size() / D);
+    const Eigen::Matrix<double, D, 1> mean = columns.rowwise().mean();
+    columns.colwise() -= mean;
     return d;
+}
+
+// Every eigenvalue of the dense dynamical matrix (eq. 9.28), ascending.
+Eigen::VectorXd eigenvalues_of(const DpmSystem& s, const Eigen::VectorXd& x)
+{
+    return vibrational_modes(s, x).eigenvalues;
+}
+
+Eigen::VectorXd eigenvalues_of(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(x.size(), x.size());
+    total_energy3d(s, x, nullptr, &m);
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues();
+}
+
+// The smallest eigenvalue above the zero modes at x, required to be a minimum whose only zero modes are the
+// D uniform translations (no rattler, whose place in its cage is not unique).
+template <class System>
+double lowest_positive_eigenvalue(const System& s, const Eigen::VectorXd& x)
+{
+    const Eigen::VectorXd eigenvalues = eigenvalues_of(s, x);
+    const SpectrumCounts counts = count_modes(eigenvalues, zero_mode_threshold(eigenvalues, 0));
+    REQUIRE(counts.negative == 0);
+    REQUIRE(counts.zero == dimension_of<System>);
+    return eigenvalues(counts.first_positive());
+}
+
+// Relaxation with the finisher of the packing (s, x) after an affine compression by 1e-3, against FIRE run
+// to a 1000 times tighter tolerance: both states lie within |F| / lambda_min of the minimum (to first order
+// the Hessian maps the displacement to the force), |F| <= sqrt(n) times the rms.
+template <class System>
+void check_against_tight_fire(System s, Eigen::VectorXd x, const FireOptions& fire)
+{
+    scale_particle_centres<dimension_of<System>>(s, x, 1 - 1e-3);
+    const RelaxOptions newton{Relaxation::fire_newton, fire};
+    Eigen::VectorXd x_newton = x;
+    const RelaxResult r = relax(s, x_newton, newton);
+    REQUIRE(r.converged);
+    MESSAGE("fire_newton: FIRE " << r.fire_iterations << " iterations, " << r.handovers << " hand-overs, "
+                                 << r.newton_steps << " Newton steps, force rms " << r.force_rms);
+    CHECK(r.handovers >= 1);
+    CHECK(r.kinetic == 0);
+    FireOptions tight = fire;
+    tight.force_tolerance /= 1000;
+    Eigen::VectorXd x_fire = x;
+    REQUIRE(relax_fire(s, x_fire, tight).converged);
+    const double lambda_min = lowest_positive_eigenvalue(s, x_fire);
+    const double n = static_cast<double>(x_fire.size());
+    const double allowed = std::sqrt(n) * (fire.force_tolerance + tight.force_tolerance) / lambda_min;
+    const double distance = without_translation<dimension_of<System>>(x_newton - x_fire).norm();
+    MESSAGE("lambda_min " << lambda_min << ", |x_newton - x_fire| " << distance << ", allowed " << allowed);
+    CHECK(distance <= allowed);
+}
+
+Eigen::VectorXd gradient_of(const DpmSystem& s, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    total_energy(s, x, &g, nullptr);
+    return g;
+}
+
+Eigen::VectorXd gradient_of(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+    total_energy3d(s, x, &g, nullptr);
+    return g;
+}
+
+// The round-off of the computed force |F| at x, measured: a rigid translation of every vertex leaves the
+// force unchanged, so its change under one (by irrational fractions of sigma = 1) is round-off alone.
+template <class System>
+double force_round_off(const System& s, const Eigen::VectorXd& x)
+{
+    constexpr int D = dimension_of<System>;
+    const Eigen::Vector3d shift(std::numbers::sqrt2 - 1, std::numbers::sqrt3 - 1, std::numbers::pi - 3);
+    Eigen::VectorXd moved = x;
+    moved.reshaped(D, x.size() / D).colwise() += shift.head<D>();
+    return (gradient_of(s, moved) - gradient_of(s, x)).norm();
+}
+
+// Newton from the minimum (s, x) displaced at random by `amplitude` per coordinate: quadratic convergence,
+// |F_k+1| <= C |F_k|^2 with C independent of k, at steps that change no contact. The shift
+// mu = theta |F| / sigma (theta = 1 once steps are accepted with rho > 3/4) leaves a residual force
+// mu |dx| ~ |F|^2 / (sigma lambda), so C >= 1 / (sigma lambda_min); Newton's own error term (third
+// derivatives of U times |dx|^2 / 2) is allowed as much again: C = 2 / (sigma lambda_min), lambda_min the
+// smallest eigenvalue above the zero modes (sigma = 1). Linear convergence at rate q makes the ratio grow by
+// 1/q per step and crosses C within the decades of force crossed here.
+// `ratios_needed`: steps above the round-off floor that the check needs.
+template <class System>
+void check_quadratic_convergence(const System& s, const Eigen::VectorXd& minimum, double amplitude,
+                                 std::size_t ratios_needed)
+{
+    Eigen::VectorXd x = minimum + amplitude * Eigen::VectorXd::Random(minimum.size());
+    NewtonOptions options;
+    options.force_tolerance = 1e-15; // beyond FIRE's: as far as round-off lets it go
+    const NewtonResult r = newton_finish(s, x, options);
+    MESSAGE("steps " << r.steps << ", rejections " << r.rejections << ", stop: " << r.stop_reason);
+    REQUIRE(r.contact_changes == 0);
+    // The force at round-off: eps times the largest force of one term, ~ k_c sigma (contacts) and the
+    // shape forces of the same order; 1e3 eps for the sums over a vertex's terms; or 10 times the
+    // measured round-off where that is larger (the 3D volume term, computed from absolute coordinates,
+    // carries eps L^3 per face in a box of side L). Steps ending there say nothing about the order.
+    const double floor = std::max(1e3 * round_off * s.kc, 10 * force_round_off(s, x));
+    MESSAGE("force round-off floor " << floor);
+    std::vector<double> ratios;
+    for (std::size_t k = 1; k < r.force_norms.size(); ++k) {
+        MESSAGE("step " << k << ": |F| " << r.force_norms[k - 1] << " -> " << r.force_norms[k]);
+        if (r.force_norms[k] > floor) ratios.push_back(r.force_norms[k] / std::pow(r.force_norms[k - 1], 2));
+    }
+    const double bound = 2 / lowest_positive_eigenvalue(s, x);
+    MESSAGE("bound on |F_k+1| / |F_k|^2: " << bound);
+    REQUIRE(ratios.size() >= ratios_needed);
+    CHECK(r.force_norms.front() / r.force_norms.back() > 1e4);
+    for (std::size_t k = 0; k < ratios.size(); ++k) {
+        CAPTURE(k);
+        CHECK(ratios[k] <= bound);
+    }
 }
 
 // Two one-vertex disks (sigma = 1, k_c = 1) in open space: disk 0 held at the origin by a stiff anchor,
@@ -80,78 +215,37 @@ void check_contact_change(const DpmSystem& system, const Eigen::VectorXd& x, con
 } // namespace
 
 TEST_CASE("Newton finisher: the minimum of FIRE run to a 1000 times tighter tolerance, within 2 sqrt(n) "
-          "(tol + tol/1000) / lambda_min [issue 19]")
+          "(tol + tol/1000) / lambda_min, in 2D and 3D [issue 19]")
 {
-    JamResult jammed = small_packing();
-    DpmSystem& s = jammed.system;
-    // A new relaxation problem from the jammed state: an affine compression by 1e-3.
-    scale_packing(s, jammed.x, 1 - 1e-3);
-    RelaxOptions newton{Relaxation::fire_newton, jammed.fire};
-    Eigen::VectorXd x_newton = jammed.x;
-    const RelaxResult r = relax(s, x_newton, newton);
-    REQUIRE(r.converged);
-    MESSAGE("fire_newton: FIRE " << r.fire_iterations << " iterations, " << r.handovers << " hand-overs, "
-                                 << r.newton_steps << " Newton steps, force rms " << r.force_rms);
-    CHECK(r.handovers >= 1);
-    CHECK(r.kinetic == 0);
-    FireOptions tight = jammed.fire;
-    tight.force_tolerance /= 1000;
-    Eigen::VectorXd x_fire = jammed.x;
-    REQUIRE(relax_fire(s, x_fire, tight).converged);
-    // Both states lie within |F| / lambda_min of the minimum (to first order: the Hessian maps the
-    // displacement to the force), |F| <= sqrt(n) times the rms; lambda_min the smallest eigenvalue above
-    // the zero-mode threshold, defined only where the zero modes are the 2 uniform translations (no
-    // rattler, whose place in its cage is not unique).
-    const ModeSpectrum modes = vibrational_modes(s, x_fire);
-    const double threshold = zero_mode_threshold(modes.eigenvalues, 0);
-    const SpectrumCounts counts = count_modes(modes.eigenvalues, threshold);
-    REQUIRE(counts.negative == 0);
-    REQUIRE(counts.zero == 2);
-    const double lambda_min = modes.eigenvalues(counts.first_positive());
-    const double n = static_cast<double>(x_fire.size());
-    const double allowed = std::sqrt(n) * (newton.fire.force_tolerance + tight.force_tolerance) / lambda_min;
-    const double distance = without_translation(x_newton - x_fire).norm();
-    MESSAGE("lambda_min " << lambda_min << ", |x_newton - x_fire| " << distance << ", allowed " << allowed);
-    CHECK(distance <= allowed);
+    SUBCASE("2D: 6 shells of 6 and 8 vertices at P = 1e-5 k_a a0")
+    {
+        const JamResult jammed = small_packing();
+        check_against_tight_fire(jammed.system, jammed.x, jammed.fire);
+    }
+    SUBCASE("3D: 4 shell icosahedra at P = 1e-5 k_v v0")
+    {
+        const Jam3dResult jammed = small_packing3d(1e-5);
+        check_against_tight_fire(jammed.system, jammed.x, jammed.fire);
+    }
 }
 
-TEST_CASE("Newton finisher: quadratic convergence, |F_k+1| / |F_k|^2 bounded without contact changes "
-          "[issue 19]")
+TEST_CASE("Newton finisher: quadratic convergence, |F_k+1| / |F_k|^2 bounded without contact changes, in 2D "
+          "and 3D [issue 19]")
 {
-    // At P = 1e-2 k_a a0 the overlaps (~1e-2 sigma) outlast a random displacement of 1e-4 sigma per
-    // coordinate: no contact opens or closes.
-    JamResult jammed = small_packing(1e-2);
-    const DpmSystem& s = jammed.system;
-    Eigen::VectorXd x = jammed.x + 1e-4 * Eigen::VectorXd::Random(jammed.x.size());
-    NewtonOptions options;
-    options.force_tolerance = 1e-15; // beyond FIRE's 1e-9: as far as round-off lets it go
-    const NewtonResult r = newton_finish(s, x, options);
-    REQUIRE(r.contact_changes == 0);
-    // The force at round-off: eps times the largest force of one term, ~ k_c sigma (contacts) and the
-    // shape forces of the same order; 1e3 eps for the sums over a vertex's terms. Steps ending there
-    // say nothing about the convergence order.
-    const double floor = 1e3 * round_off * s.kc;
-    std::vector<double> ratios;
-    for (std::size_t k = 1; k < r.force_norms.size(); ++k) {
-        MESSAGE("step " << k << ": |F| " << r.force_norms[k - 1] << " -> " << r.force_norms[k]);
-        if (r.force_norms[k] > floor) ratios.push_back(r.force_norms[k] / std::pow(r.force_norms[k - 1], 2));
+    SUBCASE("2D")
+    {
+        // At P = 1e-2 k_a a0 the overlaps (~1e-2 sigma) outlast a random displacement of 1e-4 sigma per
+        // coordinate: no contact opens or closes.
+        const JamResult jammed = small_packing(1e-2);
+        check_quadratic_convergence(jammed.system, jammed.x, 1e-4, 2);
     }
-    // Quadratic: |F_k+1| <= C |F_k|^2 with C independent of k. The shift mu = theta |F| / sigma (theta = 1
-    // once steps are accepted with rho > 3/4) leaves a residual force mu |dx| ~ |F|^2 / (sigma lambda), so
-    // C >= 1 / (sigma lambda_min); Newton's own error term (third derivatives of U times |dx|^2 / 2) is
-    // allowed as much again: C = 2 / (sigma lambda_min), lambda_min the smallest eigenvalue above the zero
-    // modes. Linear convergence at rate q makes the ratio grow by 1/q per step and crosses C within the
-    // decades of force crossed here.
-    const ModeSpectrum modes = vibrational_modes(s, x);
-    const SpectrumCounts counts = count_modes(modes.eigenvalues, zero_mode_threshold(modes.eigenvalues, 0));
-    const double lambda_min = modes.eigenvalues(counts.first_positive());
-    const double bound = 2 / lambda_min; // sigma = 1
-    MESSAGE("lambda_min " << lambda_min << ", bound on |F_k+1| / |F_k|^2: " << bound);
-    REQUIRE(ratios.size() >= 2);
-    CHECK(r.force_norms.front() / r.force_norms.back() > 1e4);
-    for (std::size_t k = 0; k < ratios.size(); ++k) {
-        CAPTURE(k);
-        CHECK(ratios[k] <= bound);
+    SUBCASE("3D")
+    {
+        // At P = 1e-3 k_v v0 the vertex pair of the icosahedra closest to contact is 2.7e-5 sigma from it
+        // (touching or not), so a start 1e-6 sigma per coordinate from the minimum changes no contact.
+        // From there the force (1e-5) reaches the round-off floor in two steps: one ratio to check.
+        const Jam3dResult jammed = small_packing3d(1e-3);
+        check_quadratic_convergence(jammed.system, jammed.x, 1e-6, 1);
     }
 }
 
