@@ -189,7 +189,7 @@ JamResult jam(const JamOptions& options)
     const auto relax = [&](long step_index) {
         if (rough_disks) return relax_rigid(step_index);
         const RelaxResult r = dpm::relax(s, out.x, relax_options);
-        add_relaxation_cost(r, out);
+        out.add(r);
         if (!r.converged)
             throw NumericalError("relaxation during compression (" + relax_shortfall(r, relax_options) + ")",
                                  step_index,

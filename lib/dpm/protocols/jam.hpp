@@ -60,20 +60,13 @@ struct JamState
     bool decompression = false; // reached by expanding from pressure_max
 };
 
-struct JamResult
+struct JamResult : RelaxTally // the relaxations' cost
 {
     std::vector<JamState> states; // onset first, then the compressed states
     DpmSystem system;
     Eigen::VectorXd x;
     double pressure_unit = 1; // k_c (disks) or k_a a0
-    long fire_iterations = 0;
-    long force_evaluations = 0; // energy and gradient evaluations of all FIRE runs
-    double relax_seconds = 0;   // wall time of all relaxations (FIRE and the Newton finisher)
-    double fire_seconds = 0;    // of which FIRE
-    long newton_steps = 0;      // accepted steps of the Newton finisher (relaxation = fire_newton)
-    long factorizations = 0;    // its sparse LDL^T factorisations
-    long handovers = 0;         // relaxations FIRE handed over to it
-    FireOptions fire;           // the protocol's FIRE settings, for further steps from its states
+    FireOptions fire;         // the protocol's FIRE settings, for further steps from its states
 };
 
 // Throws InputError for floppy particles with A0_floppy below A_min(N) of either size (naming A0, checked

@@ -112,7 +112,7 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     const RelaxOptions relax_options{options.relaxation, fire};
     const auto relax = [&](long step_index) {
         const RelaxResult r = dpm::relax(s, out.x, relax_options);
-        add_relaxation_cost(r, out);
+        out.add(r);
         if (!r.converged)
             throw NumericalError(
                 "relaxation during 3D compression (" + relax_shortfall(r, relax_options) + ")", step_index,

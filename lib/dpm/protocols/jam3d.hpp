@@ -64,7 +64,7 @@ struct Jam3dState
     double box = 0; // its box side [sigma]
 };
 
-struct Jam3dResult
+struct Jam3dResult : RelaxTally // the relaxations' cost
 {
     DpmSystem3d system;             // with the box of the packing at P_t
     std::vector<Jam3dState> states; // P_t first, then the targets above it (Jam3dOptions::pressures)
@@ -75,13 +75,6 @@ struct Jam3dResult
     double length_unit = 1;         // v0^(1/3) in sigma
     double phi = 0;                 // packing_fraction3d
     double pressure = 0;            // P [k_v v0]
-    long fire_iterations = 0;
-    long force_evaluations = 0; // energy and gradient evaluations of all FIRE runs
-    double relax_seconds = 0;   // wall time of all relaxations (FIRE and the Newton finisher)
-    double fire_seconds = 0;    // of which FIRE
-    long newton_steps = 0;      // accepted steps of the Newton finisher (relaxation = fire_newton)
-    long factorizations = 0;    // its sparse LDL^T factorisations
-    long handovers = 0;         // relaxations FIRE handed over to it
     long box_steps = 0;
     int saddle_escapes = 0; // moves off a saddle, over all targets
     long window_jumps = 0;  // overshoots of a target window kept and decompressed (Jam3dOptions::jump_step)

@@ -137,19 +137,28 @@ struct RelaxResult
 template <RelaxableSystem System>
 RelaxResult relax(const System& system, Eigen::VectorXd& x, const RelaxOptions& options);
 
-// Adds a relaxation's cost to a protocol's tallies: the fields fire_iterations, force_evaluations,
-// relax_seconds, fire_seconds, newton_steps, factorizations and handovers (JamResult, Jam3dResult).
-template <class Tally>
-void add_relaxation_cost(const RelaxResult& r, Tally& tally)
+// What a protocol's relaxations cost, summed over them (the jamming protocols' results in 2D and 3D).
+struct RelaxTally
 {
-    tally.fire_iterations += r.fire_iterations;
-    tally.force_evaluations += r.force_evaluations;
-    tally.relax_seconds += r.seconds;
-    tally.fire_seconds += r.fire_seconds;
-    tally.newton_steps += r.newton_steps;
-    tally.factorizations += r.factorizations;
-    tally.handovers += r.handovers;
-}
+    long fire_iterations = 0;
+    long force_evaluations = 0; // energy and gradient evaluations of all FIRE runs
+    double relax_seconds = 0;   // wall time of all relaxations (FIRE and the Newton finisher)
+    double fire_seconds = 0;    // of which FIRE
+    long newton_steps = 0;      // accepted steps of the Newton finisher (relaxation = fire_newton)
+    long factorizations = 0;    // its sparse LDL^T factorisations
+    long handovers = 0;         // relaxations FIRE handed over to it
+
+    void add(const RelaxResult& r)
+    {
+        fire_iterations += r.fire_iterations;
+        force_evaluations += r.force_evaluations;
+        relax_seconds += r.seconds;
+        fire_seconds += r.fire_seconds;
+        newton_steps += r.newton_steps;
+        factorizations += r.factorizations;
+        handovers += r.handovers;
+    }
+};
 
 // Why a relaxation stopped unconverged (fire_shortfall, and the finisher's last stop reason).
 std::string relax_shortfall(const RelaxResult& result, const RelaxOptions& options);

@@ -6,14 +6,13 @@
 // one at every size measured (reproductions/dpm/README.md); this test guards the sum when that changes.
 #include "core/rng.hpp"
 #include "dpm/system/system.hpp"
-
-#include <doctest/doctest.h>
-#include <omp.h>
+#include "support/thread_bits.hpp"
 
 #include <numbers>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using namespace softgrain::verification;
 
 namespace {
 
@@ -45,32 +44,20 @@ DpmSystem random_sheared_polygons(ShapeModel model, Rng& rng, Eigen::VectorXd& x
 
 TEST_CASE("2D total energy: the same bits on 1 and 2 threads [DPM eqs. (9.1), (9.3)-(9.4)]")
 {
-    const int threads_before = omp_get_max_threads();
     Rng rng(43);
     for (ShapeModel model : {ShapeModel::shell, ShapeModel::floppy, ShapeModel::surface_tension}) {
         Eigen::VectorXd x;
         const DpmSystem s = random_sheared_polygons(model, rng, x);
         REQUIRE(total_energy(s, x, nullptr, nullptr, interaction_part) > 0);
-        Eigen::VectorXd gradient[2];
-        double energy[2];
-        for (int threads : {1, 2}) {
-            omp_set_num_threads(threads);
-            gradient[threads - 1] = Eigen::VectorXd::Zero(x.size());
-            energy[threads - 1] = total_energy(s, x, &gradient[threads - 1], nullptr);
-        }
+        const auto threaded = on_one_and_two_threads(
+            x.size(), [&](Eigen::VectorXd& gradient) { return total_energy(s, x, &gradient, nullptr); });
         // The serial loop over the particles, then the interaction and the anchor.
-        Eigen::VectorXd serial_gradient = Eigen::VectorXd::Zero(x.size());
-        double serial_energy = 0;
+        EnergyAndGradient serial{0, Eigen::VectorXd::Zero(x.size())};
         for (const Particle& p : s.particles)
-            serial_energy += shape_energy(p.shape, x, p.first, p.count, &serial_gradient, nullptr);
-        serial_energy += total_energy(s, x, &serial_gradient, nullptr, interaction_part);
-        serial_energy += total_energy(s, x, &serial_gradient, nullptr, anchor_part);
+            serial.energy += shape_energy(p.shape, x, p.first, p.count, &serial.gradient, nullptr);
+        serial.energy += total_energy(s, x, &serial.gradient, nullptr, interaction_part);
+        serial.energy += total_energy(s, x, &serial.gradient, nullptr, anchor_part);
         CAPTURE(shape_model_name(model));
-        CHECK(energy[0] == energy[1]);
-        CHECK(gradient[0] == gradient[1]);
-        CHECK(energy[1] == serial_energy);
-        CHECK(gradient[1] == serial_gradient);
-        REQUIRE(gradient[0].norm() > 0);
+        check_same_bits(threaded, serial);
     }
-    omp_set_num_threads(threads_before);
 }
