@@ -104,9 +104,10 @@ NewtonResult newton_finish(const System& system, Eigen::VectorXd& x, const Newto
 // Round-off of a difference of two computed total energies near x, measured: U is invariant under a rigid
 // translation of every vertex (and anchor), so the change of the computed U under a translation (by
 // irrational fractions of the smallest vertex diameter) is round-off alone, a sample of the spread s of such
-// a difference. The bound is 6 times the rms of 8 samples plus 16 eps |U|: a round-off difference passes
-// 6 s with probability 2e-9 if it is normal, and 4.2 s (the sample rms 30 % low, 2.5 times its relative
-// spread for 8 samples) with 3e-5. Energy differences below it are noise. (One or two samples are not
+// a difference. The bound is 6 times the rms of 8 samples plus 16 eps |U|: if such differences are normal,
+// one exceeds it with probability 3e-4 (|t| > 6 for Student's t with 8 degrees of freedom, since the rms
+// is itself a sample), and a false rejection costs the finisher one shortened step. Energy differences
+// below it are noise. (One or two samples are not
 // enough: on 4 shell icosahedra two of them gave 2.7e-18 where the differences the finisher met reached
 // 1.1e-17, and it rejected 17 good steps; verification/dpm/relax/newton_relax.cpp.)
 template <RelaxableSystem System>

@@ -159,8 +159,8 @@ void check_quadratic_convergence(const System& s, const Eigen::VectorXd& minimum
     REQUIRE(r.contact_changes == 0);
     // The force at round-off: eps times the largest force of one term, ~ k_c sigma (contacts) and the
     // shape forces of the same order; 1e3 eps for the sums over a vertex's terms; or 10 times the
-    // measured round-off where that is larger (the 3D volume term, computed from absolute coordinates,
-    // carries eps L^3 per face in a box of side L). Steps ending there say nothing about the order.
+    // measured round-off (the change of the force under a rigid translation) where that is larger. Steps
+    // ending there say nothing about the order.
     const double floor = std::max(1e3 * round_off * s.kc, 10 * force_round_off(s, x));
     MESSAGE("force round-off floor " << floor);
     std::vector<double> ratios;
