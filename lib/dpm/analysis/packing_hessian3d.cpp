@@ -100,6 +100,15 @@ double smallest_vertex_diameter(const DpmSystem3d& system)
 
 } // namespace
 
+double polish_newton3d(const DpmSystem3d& system, Eigen::VectorXd& x, double force_tolerance, int max_steps,
+                       HessianStorage storage)
+{
+    if (!uses_sparse_hessian(storage, x.size()))
+        return polish_newton(system_energy3d(system), x, force_tolerance, max_steps);
+    return polish_newton_sparse(system_energy3d(system), system_sparse_hessian3d(system), x, force_tolerance,
+                                max_steps, smallest_vertex_diameter(system));
+}
+
 double largest_eigenvalue3d(const DpmSystem3d& system, const Eigen::VectorXd& x, HessianStorage storage)
 {
     if (uses_sparse_hessian(storage, x.size()))

@@ -59,6 +59,11 @@ bool leave_saddle_sparse(const EnergyWithDerivatives& energy, const SparseHessia
 EnergyWithDerivatives system_energy3d(const DpmSystem3d& system);
 SparseHessianOf system_sparse_hessian3d(const DpmSystem3d& system);
 
+// polish_newton on the total energy of a 3D system, dense or sparse by `storage` (polish_newton_sparse):
+// Newton to a largest force below force_tolerance, at most max_steps; returns the largest force reached.
+double polish_newton3d(const DpmSystem3d& system, Eigen::VectorXd& x, double force_tolerance, int max_steps,
+                       HessianStorage storage);
+
 // The three uses of the 3D protocol, dense or sparse by `storage`: the largest eigenvalue of M [k_c],
 // polish_for_modes and leave_saddle.
 double largest_eigenvalue3d(const DpmSystem3d& system, const Eigen::VectorXd& x, HessianStorage storage);

@@ -49,8 +49,9 @@ struct Jam3dOptions
     double zero_threshold = 1e-10;
     long fire_budget = 1000000; // FIRE steps per relaxation; beyond them: NumericalError
     double jump_step = 0;       // BoxSchedule::jump_step (0: off)
-    // The Hessian of FIRE's time step and of the saddle test: dense up to dense_hessian_limit3d degrees of
-    // freedom, sparse above (packing_hessian3d.hpp); tests force either.
+    // The Hessian of FIRE's time step and of the saddle test (and of dpm.shear_modulus3d's Newton steps):
+    // dense up to dense_hessian_limit3d degrees of freedom, sparse above (packing_hessian3d.hpp); tests and
+    // dpm.bench force either.
     HessianStorage hessian = HessianStorage::automatic;
     // FIRE alone, or FIRE handing over to the Newton finisher where it crawls (newton_relax.hpp).
     Relaxation relaxation = Relaxation::fire;

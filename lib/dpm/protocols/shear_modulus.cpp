@@ -15,7 +15,7 @@ ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorX
     ShearModulusResult out;
     std::vector<double> strain;
     const auto minimise = [&](int step) {
-        out.force_max = polish_newton(packing.energy, x, force_tolerance, 30);
+        out.force_max = packing.minimise(x, force_tolerance);
         if (!(out.force_max < force_tolerance)) {
             std::ostringstream what;
             what << "Newton minimisation after a shear step (largest force " << out.force_max << ")";
@@ -50,9 +50,7 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
                                  double force_tolerance, const ShearedSystemObserver<DpmSystem>& observe)
 {
     const ShearablePacking packing{
-        [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
-            return total_energy(system, y, g, m);
-        },
+        [&system](Eigen::VectorXd& y, double tolerance) { return polish_newton(system, y, tolerance, 30); },
         [&system](Eigen::VectorXd& y, double dgamma_step) { shear_packing(system, y, dgamma_step); },
         [&system](const Eigen::VectorXd& y) {
             const Eigen::Matrix2d sigma = stress_tensor(system, y);
@@ -62,11 +60,12 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
 }
 
 ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance, const ShearedSystemObserver<DpmSystem3d>& observe)
+                                 double force_tolerance, const ShearedSystemObserver<DpmSystem3d>& observe,
+                                 HessianStorage storage)
 {
     const ShearablePacking packing{
-        [&system](const Eigen::VectorXd& y, Eigen::VectorXd* g, Eigen::MatrixXd* m) {
-            return total_energy3d(system, y, g, m);
+        [&system, storage](Eigen::VectorXd& y, double tolerance) {
+            return polish_newton3d(system, y, tolerance, 30, storage);
         },
         [&system](Eigen::VectorXd& y, double dgamma_step) { shear_packing3d(system, y, dgamma_step); },
         [&system](const Eigen::VectorXd& y) {

@@ -4,12 +4,15 @@
 // G = d Sigma~ / d gamma (least-squares slope over the steps). The minimisation after each step is Newton's
 // method with the pseudo-inverse of the dynamical matrix (polish_newton) from the previous equilibrium: for a
 // step of 5e-9 the quadratic model is exact to O(dgamma^2), so it reaches the minimum FIRE would approach, to
-// round-off (decision dpm-shear-modulus). The procedure is written once, on the three operations it needs
+// round-off (decision dpm-shear-modulus). In 3D above dense_hessian_limit3d degrees of freedom (or by
+// choice) the steps are regularised Newton steps on the sparse matrix (polish_newton_sparse), whose memory
+// and time grow with its non-zeros instead of n^2 and n^3. The procedure is written once, on the three operations it needs
 // from a packing (ShearablePacking); 2D and 3D systems provide them. Units: G and Sigma in the stress unit of
 // the system, [E/L^2] in 2D, [E/L^3] in 3D.
 #pragma once
 
 #include "dpm/analysis/modes.hpp"
+#include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/system/system.hpp"
 #include "dpm/system/system3d.hpp"
 
@@ -30,7 +33,8 @@ struct ShearModulusResult
 // (Lees-Edwards) box, which shear changes.
 struct ShearablePacking
 {
-    EnergyWithDerivatives energy;                         // U(x), adding dU/dx and d^2U/dx^2 when given
+    // Newton from x to a largest force component below the tolerance; returns the largest force reached.
+    std::function<double(Eigen::VectorXd&, double)> minimise;
     std::function<void(Eigen::VectorXd&, double)> shear;  // x_i += dgamma y_i; the box strain grows by dgamma
     std::function<double(const Eigen::VectorXd&)> stress; // Sigma~ = -Sigma_xy (symmetric part)
 };
@@ -53,6 +57,7 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
                                  const ShearedSystemObserver<DpmSystem>& observe = {});
 ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
                                  double force_tolerance,
-                                 const ShearedSystemObserver<DpmSystem3d>& observe = {});
+                                 const ShearedSystemObserver<DpmSystem3d>& observe = {},
+                                 HessianStorage storage = HessianStorage::automatic);
 
 } // namespace softgrain::dpm

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace softgrain {
@@ -41,11 +42,13 @@ using StateShearObserver = std::function<void(std::size_t state, int step, const
 
 // G at every state of a jamming run; a state has x, box, pressure and phi (JamState, Jam3dState);
 // pressure_unit: the model's pressure unit in the system's stress unit; force_tolerance in the model's
-// pressure unit (times length), as the scenes take it.
+// pressure unit (times length), as the scenes take it; storage: in 3D, the Hessian of the Newton steps
+// (shear_modulus.hpp).
 template <class System, class States>
 ModulusMember moduli_at_states(System system, const States& states, double pressure_unit, double dgamma,
                                int steps, double force_tolerance,
-                               const StateShearObserver<System>& observe = {})
+                               const StateShearObserver<System>& observe = {},
+                               HessianStorage storage = HessianStorage::automatic)
 {
     ModulusMember m;
     for (std::size_t k = 0; k < states.size(); ++k) {
@@ -55,8 +58,12 @@ ModulusMember moduli_at_states(System system, const States& states, double press
         if (observe)
             at_state = [&observe, k](int step, const System& sheared, const Eigen::VectorXd& x,
                                      double stress) { observe(k, step, sheared, x, stress); };
-        const ShearModulusResult g =
-            shear_modulus(system, state.x, dgamma, steps, force_tolerance * pressure_unit, at_state);
+        const double tolerance = force_tolerance * pressure_unit;
+        ShearModulusResult g;
+        if constexpr (std::is_same_v<System, DpmSystem3d>)
+            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state, storage);
+        else
+            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state);
         m.pressure.push_back(state.pressure);
         m.phi.push_back(state.phi);
         m.modulus.push_back(g.modulus / pressure_unit);

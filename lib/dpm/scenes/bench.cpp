@@ -100,13 +100,8 @@ OptionBinding<BenchOptions> bench_binding()
             "unused")
         .at_least(2)
         .at_most(3);
-    binding.choice(&BenchOptions::hessian3d, "hessian3d",
-                   {{"automatic", HessianStorage::automatic},
-                    {"dense", HessianStorage::dense},
-                    {"sparse", HessianStorage::sparse}},
-                   "dimension = 3: the Hessian of the protocol's FIRE time step and saddle tests "
-                   "(packing_hessian3d.hpp): dense up to 2048 degrees of freedom and sparse above, or either "
-                   "throughout");
+    bind_hessian_storage(binding, &BenchOptions::hessian3d, "hessian3d",
+                         "dimension = 3: the protocol's FIRE time step and saddle tests");
     // In 3D the model and the vertex counts must name 3D particles: refused before anything runs.
     binding.check([](const BenchOptions& options) {
         if (options.dimension == 3) jam_options_3d(options.jam, options.hessian3d);

@@ -6,6 +6,7 @@
 #include "core/option_binding.hpp"
 #include "core/resources.hpp"
 #include "core/scene.hpp"
+#include "dpm/analysis/packing_hessian3d.hpp"
 #include "dpm/protocols/jam.hpp"
 
 #include <cstddef>
@@ -55,6 +56,21 @@ void bind_relaxation(OptionBinding<Options>& binding, RelaxationField relaxation
                    "minimiser after each box step: FIRE alone, or FIRE handing over to a regularised Newton "
                    "finisher on the sparse Hessian where it crawls (newton_relax.hpp" +
                        (note.empty() ? std::string() : "; " + note) + ")");
+}
+
+// The storage of a 3D packing's Hessian (packing_hessian3d.hpp), bound to `storage` (a field of Options)
+// under `name`; `uses` says what the scene takes it for.
+template <class Options, class StorageField>
+void bind_hessian_storage(OptionBinding<Options>& binding, StorageField storage, const std::string& name,
+                          const std::string& uses)
+{
+    binding.choice(storage, name,
+                   {{"automatic", HessianStorage::automatic},
+                    {"dense", HessianStorage::dense},
+                    {"sparse", HessianStorage::sparse}},
+                   "the Hessian of " + uses +
+                       " (packing_hessian3d.hpp): dense up to 2048 degrees of freedom and sparse above, or "
+                       "either throughout");
 }
 
 // The parameters of the jamming protocol (jam.hpp) as dpm.jam declares them, bound to the JamOptions that

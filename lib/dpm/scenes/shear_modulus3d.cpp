@@ -117,6 +117,9 @@ OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
               "at round-off, usually far below)")
         .positive();
     bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "the jamming protocol");
+    bind_hessian_storage(binding, jam(&Jam3dOptions::hessian), "hessian",
+                         "the jamming protocol's FIRE time step and saddle tests and of the Newton steps "
+                         "after each shear step");
     binding.seed(jam(&Jam3dOptions::seed), "seed", "seed of the random placement of the first packing");
     binding.check(check_floppy_A0);
     binding.check([](const ShearModulus3dOptions& options) {
@@ -172,7 +175,7 @@ ShearModulus3dResult shear_modulus3d(const ShearModulus3dOptions& options, bool 
             const Jam3dResult packing = jam3d(member);
             ModulusMember measured =
                 moduli_at_states(packing.system, packing.states, packing.pressure_unit, options.strain_step,
-                                 options.strain_steps, options.force_tolerance);
+                                 options.strain_steps, options.force_tolerance, {}, member.hessian);
             measured.fire_iterations = packing.fire_iterations;
             if (i == 0 && keep_drawn) result.drawn = packing;
             return measured;
@@ -221,7 +224,12 @@ Scene shear_modulus3d_scene()
                        "exponents of G ~ P^eta (Fig. 9.16b)",
                        shear_modulus3d_binding(), run_shear_modulus3d)
         .needing(shear_modulus3d_binding().estimate([](const ShearModulus3dOptions& options) {
-            return packing3d_memory(options.jam.particles, options.jam.mesh, 1);
+            // The shear steps' dense Newton step holds one dense matrix; the sparse one none beyond the
+            // protocol's non-zeros.
+            const Eigen::Index n =
+                3 * Eigen::Index{options.jam.particles} * mesh_from_name(options.jam.mesh).vertex_count();
+            return packing3d_memory(options.jam.particles, options.jam.mesh,
+                                    uses_sparse_hessian(options.jam.hessian, n) ? 0 : 1);
         }))
         .with_vtk();
 }
