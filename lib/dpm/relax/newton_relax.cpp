@@ -185,6 +185,7 @@ NewtonResult newton_finish(const System& system, Eigen::VectorXd& x, const Newto
     double energy = energy_and_force(system, x, force);
     ++result.force_evaluations;
     require_finite(energy, force, 0, "the start");
+    std::vector<std::pair<int, int>> touching = touching_pairs(system, x); // at x, kept with it
     const double noise = energy_round_off(system, x, energy);
     const double length = smallest_vertex_diameter(system);
     result.energies.push_back(energy);
@@ -252,8 +253,9 @@ NewtonResult newton_finish(const System& system, Eigen::VectorXd& x, const Newto
         const double ratio = decrease / predicted;
         if (!at_round_off && ratio < 0.25) theta *= 4;
         if (at_round_off || ratio > 0.75) theta = std::max(1.0, theta / 4);
-        const bool contacts_changed = touching_pairs(system, x) != touching_pairs(system, trial);
-        result.contact_changes += contacts_changed ? 1 : 0;
+        std::vector<std::pair<int, int>> trial_touching = touching_pairs(system, trial);
+        result.contact_changes += trial_touching != touching ? 1 : 0;
+        touching.swap(trial_touching);
         x = trial;
         energy = trial_energy;
         force.swap(trial_force);
