@@ -161,7 +161,8 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     return out;
 }
 
-MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int dense_matrices)
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, HessianStorage storage,
+                                int dense_matrices)
 {
     const double mesh_vertices = mesh_from_name(mesh).vertex_count();
     const double n = 3 * particles * mesh_vertices;
@@ -171,7 +172,7 @@ MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int d
     // has at least (3 N_mu)^2 non-zeros per particle (measured: 127 188 for 8 x 42, 8 x 126^2 = 127 008),
     // each held as an assembly triplet (16 B), in M (12 B) and in the lower half of its LDL^T factor (6 B).
     const MemoryEstimate protocol =
-        n <= dense_hessian_limit3d
+        !uses_sparse_hessian(storage, static_cast<Eigen::Index>(n))
             ? dense_matrix_memory(n, 2, what)
             : per_item_memory(particles * std::pow(3 * mesh_vertices, 2), 34.0,
                               "sparse Hessian non-zeros, particles x (3 x mesh vertices)^2");

@@ -85,9 +85,9 @@ struct Jam3dResult : RelaxTally // the relaxations' cost
 Jam3dResult jam3d(const Jam3dOptions& options);
 
 // Memory of a 3D packing of `particles` particles of the mesh named `mesh`: the larger of the protocol's
-// Hessian (dense 3N x 3N matrices up to dense_hessian_limit3d, its sparse non-zeros above) and the
-// `dense_matrices` dense 3N x 3N matrices a scene needs after it (a dense spectrum: the matrix and its
-// eigenvectors; 0: none).
-MemoryEstimate packing3d_memory(double particles, const std::string& mesh, int dense_matrices);
+// Hessian in `storage` (two dense 3N x 3N matrices, or its sparse non-zeros) and the `dense_matrices` dense
+// 3N x 3N matrices a scene needs after it (a dense spectrum: the matrix and its eigenvectors; 0: none).
+MemoryEstimate packing3d_memory(double particles, const std::string& mesh, HessianStorage storage,
+                                int dense_matrices);
 
 } // namespace softgrain::dpm

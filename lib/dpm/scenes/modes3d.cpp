@@ -108,6 +108,9 @@ OptionBinding<Modes3dOptions> modes3d_binding()
                  "first state is kept. Summary saddle_escapes: the moves made")
         .non_negative();
     bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "packing: the 3D jamming protocol");
+    bind_hessian_storage(binding, jam(&Jam3dOptions::hessian), "hessian",
+                         "packing: the jamming protocol's FIRE time step and saddle tests (the spectrum "
+                         "follows lowest_modes)");
     // A count of FIRE steps (a long in the protocol) with the range it always had.
     binding
         .count(jam(&Jam3dOptions::fire_budget), "fire_budget", "1",
@@ -497,8 +500,9 @@ Scene modes3d_scene()
             // Every mode: the dense matrix and its eigenvectors; the lowest K: the protocol's Hessian and K
             // eigenvectors of n = 3 x particles x mesh vertices.
             if (options.lowest_modes == 0)
-                return packing3d_memory(options.jam.particles, options.jam.mesh, 2);
-            MemoryEstimate need = packing3d_memory(options.jam.particles, options.jam.mesh, 0);
+                return packing3d_memory(options.jam.particles, options.jam.mesh, options.jam.hessian, 2);
+            MemoryEstimate need =
+                packing3d_memory(options.jam.particles, options.jam.mesh, options.jam.hessian, 0);
             const double n = 3.0 * options.jam.particles * mesh_from_name(options.jam.mesh).vertex_count();
             need.bytes += n * options.lowest_modes * sizeof(double);
             need.basis += ", and lowest_modes eigenvectors of 3 x particles x mesh vertices doubles";

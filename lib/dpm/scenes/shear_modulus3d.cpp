@@ -228,7 +228,7 @@ Scene shear_modulus3d_scene()
             // protocol's non-zeros.
             const Eigen::Index n =
                 3 * Eigen::Index{options.jam.particles} * mesh_from_name(options.jam.mesh).vertex_count();
-            return packing3d_memory(options.jam.particles, options.jam.mesh,
+            return packing3d_memory(options.jam.particles, options.jam.mesh, options.jam.hessian,
                                     uses_sparse_hessian(options.jam.hessian, n) ? 0 : 1);
         }))
         .with_vtk();
