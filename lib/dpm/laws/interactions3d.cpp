@@ -4,7 +4,11 @@
 #include "dpm/laws/interactions.hpp"
 #include "dpm/system/system3d.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <compare>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -29,47 +33,76 @@ TriangleFeature nearest_triangle_feature(const Eigen::Vector3d& p, const Eigen::
 
 namespace {
 
-struct Sphere
+// Vertex i of particle mu near the image `image` of particle beta (mu != beta): an ordered term of the
+// smooth interaction.
+struct NearSurface
 {
-    Eigen::Vector3d centre;
-    double radius;
+    int mu = 0, beta = 0;
+    std::array<int, 3> image{}; // (n_x, n_y, n_z), image_translation
+    int i = 0;
+
+    auto operator<=>(const NearSurface&) const = default;
 };
 
-// Vertex mean and the largest distance of a vertex from it.
-Sphere bounding_sphere(const DpmSystem3d& s, const Particle3d& p, const Eigen::VectorXd& x)
+// The lattice translation of the image with indices n = (n_x, n_y, n_z):
+// -(n_x L + n_y gamma L, n_y L, n_z L), gamma wrapped (wrapped_strain3d); made from the indices, so the
+// same vector for every vertex pair that finds the image.
+Eigen::Vector3d image_translation(const DpmSystem3d& s, const std::array<int, 3>& n)
 {
-    const Eigen::Matrix3Xd v = s.vertices(p, x);
-    const Eigen::Vector3d centre = v.rowwise().mean();
-    return {centre, (v.colwise() - centre).colwise().norm().maxCoeff()};
+    if (!s.box) return Eigen::Vector3d::Zero();
+    const double L = *s.box;
+    return -Eigen::Vector3d((n[0] + n[1] * wrapped_strain3d(s)) * L, n[1] * L, n[2] * L);
 }
 
-// The translations of particle b (its periodic images, or none without a box) that bring it within
-// `reach` of the point `from`, given b's vertex mean.
-std::vector<Eigen::Vector3d> images_within(const DpmSystem3d& s, const Eigen::Vector3d& from,
-                                           const Eigen::Vector3d& centre, double reach)
+// Adds (mu of i, beta of j, n, i) for the images n of vertex j within the list's contact range of vertex i
+// (vertex_pairs3d.hpp): the nearest image of r_j - r_i in the unsheared coordinates u = (x - gamma y, y, z),
+// and where the list may hold several images per pair (a box below twice its reach) its 26 neighbours.
+void add_images(const DpmSystem3d& s, const VertexPairList3d& list, const Eigen::VectorXd& x, int i, int j,
+                std::vector<NearSurface>& near)
 {
-    const Eigen::Vector3d d = centre - from;
-    if (!s.box)
-        return d.norm() < reach ? std::vector<Eigen::Vector3d>{Eigen::Vector3d::Zero()}
-                                : std::vector<Eigen::Vector3d>{};
-    const double L = *s.box;
-    // The image lattice is spanned by (L, 0, 0), (gamma L, L, 0), (0, 0, L) under a Lees-Edwards strain
-    // gamma (gamma and gamma - 1 span the same lattice: the one in [-1/2, 1/2] is used). Around the nearest
-    // image, the others beyond its 26 neighbours are farther than (1.5 - |gamma|) L.
-    const double gamma = s.lees_edwards_strain - std::round(s.lees_edwards_strain);
-    if (reach >= (1.5 - std::abs(gamma)) * L)
-        throw NumericalError("periodic box side " + std::to_string(L) + " below a particle pair's reach " +
-                                 std::to_string(reach) + " over 1.5 - |Lees-Edwards strain|",
-                             0, "the packing is compressed beyond the image range; lower the pressure");
-    const Eigen::Vector3d nearest = s.image(d) - d;
-    std::vector<Eigen::Vector3d> shifts;
-    for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j)
-            for (int k = -1; k <= 1; ++k) {
-                const Eigen::Vector3d shift = nearest + L * Eigen::Vector3d(i + gamma * j, j, k);
-                if ((d + shift).norm() < reach) shifts.push_back(shift);
+    const Eigen::Vector3d d = x.segment<3>(3 * j) - x.segment<3>(3 * i);
+    std::array<int, 3> nearest{0, 0, 0};
+    if (s.box) {
+        const double L = *s.box;
+        nearest = {static_cast<int>(std::round((d.x() - wrapped_strain3d(s) * d.y()) / L)),
+                   static_cast<int>(std::round(d.y() / L)), static_cast<int>(std::round(d.z() / L))};
+    }
+    const int spread = list.one_image() ? 0 : 1;
+    const double range = list.contact_range();
+    for (int a = -spread; a <= spread; ++a)
+        for (int b = -spread; b <= spread; ++b)
+            for (int c = -spread; c <= spread; ++c) {
+                const std::array<int, 3> n{nearest[0] + a, nearest[1] + b, nearest[2] + c};
+                if ((d + image_translation(s, n)).squaredNorm() < range * range)
+                    near.push_back({list.particle_of(i), list.particle_of(j), n, i});
             }
-    return shifts;
+}
+
+// The ordered terms of the smooth interaction at x and the contact range of the list they came from.
+struct SmoothTerms
+{
+    std::vector<NearSurface> near;
+    double range = 0;
+};
+
+// Every (vertex i of mu, image of particle beta) with a vertex of that image within the contact range of i,
+// from the system's Verlet list (vertex_pairs3d.hpp), once, in (mu, beta, image, i) order. A vertex within
+// sigma_mb of a face, edge or vertex of the image is within the contact range of a corner of it, so every
+// term that is not zero is here; the others add nothing, and the order depends on indices alone: the sums
+// do not depend on the list.
+SmoothTerms smooth_terms(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    SmoothTerms terms;
+    if (s.particles.size() < 2) return terms;
+    const std::shared_ptr<const VertexPairList3d> list = s.contacts.list(s, x);
+    terms.range = list->contact_range();
+    for (const CandidatePair3d& pair : list->pairs()) {
+        add_images(s, *list, x, pair.i, pair.j, terms.near);
+        add_images(s, *list, x, pair.j, pair.i, terms.near);
+    }
+    std::sort(terms.near.begin(), terms.near.end());
+    terms.near.erase(std::unique(terms.near.begin(), terms.near.end()), terms.near.end());
+    return terms;
 }
 
 // Local coordinates of `points`: the first (the vertex of mu) as stored, the others (of beta) shifted.
@@ -85,20 +118,28 @@ Eigen::Matrix<double, 3 * K, 1> gather_shifted(const Eigen::VectorXd& x, const s
 
 // Vertex i against the surface of particle b at the translation `shift`: the inclusion-exclusion sum of
 // the header with spring constant k. Calls `contact()` once if the vertex is within sigma of the surface.
-// Terms go to the global arrays when given.
+// Terms go to the global arrays when given. A face, edge or vertex none of whose corners lies within
+// `range` (the list's contact range) is farther than sigma_mb and skipped unevaluated.
 template <class OnContact>
-double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen::Vector3d& shift, double k,
-                      double sigma, const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
+double vertex_surface(const DpmSystem3d& s, const NearSurface& near, double range, double k,
+                      const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
                       Eigen::Matrix3d* virial, const OnContact& contact)
 {
+    const auto [mu, beta, image, i] = near;
     const Particle3d& b = s.particles[beta];
+    const double sigma = 0.5 * (s.particles[mu].sigma + b.sigma);
+    const Eigen::Vector3d shift = image_translation(s, image);
     const TriangleMesh& mesh = s.meshes[b.mesh];
     const Eigen::Vector3d p = x.segment<3>(3 * i);
     const auto point = [&](int v) { return Eigen::Vector3d(x.segment<3>(3 * (b.first + v)) + shift); };
+    std::vector<char> in_range(static_cast<std::size_t>(b.count));
+    for (int v = 0; v < b.count; ++v)
+        in_range[v] = (point(v) - p).squaredNorm() < range * range;
     double energy = 0;
     bool touching = false;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const auto& face = mesh.faces[f];
+        if (!in_range[face[0]] && !in_range[face[1]] && !in_range[face[2]]) continue;
         const std::array<int, 4> points{i, b.first + face[0], b.first + face[1], b.first + face[2]};
         const Eigen::Matrix<double, 12, 1> local = gather_shifted<4>(x, points, shift);
         const double d = point_triangle_distance(local);
@@ -119,6 +160,7 @@ double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen
     if (!touching) return 0; // every edge and vertex is farther than its faces
     contact();
     for (const MeshEdge& e : mesh.edges) {
+        if (!in_range[e.a] && !in_range[e.b]) continue;
         const std::array<int, 3> points{i, b.first + e.a, b.first + e.b};
         const Eigen::Matrix<double, 9, 1> local = gather_shifted<3>(x, points, shift);
         if (point_segment_distance(local) < sigma)
@@ -126,6 +168,7 @@ double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen
                 add_local_term<3, 3>(PointSegmentSpring{-k, sigma}, points, local, gradient, hessian, virial);
     }
     for (int v = 0; v < b.count; ++v) {
+        if (!in_range[v]) continue;
         const std::array<int, 2> points{i, b.first + v};
         const Eigen::Matrix<double, 6, 1> local = gather_shifted<2>(x, points, shift);
         if ((local.segment<3>(3) - p).squaredNorm() < sigma * sigma)
@@ -135,40 +178,35 @@ double vertex_surface(const DpmSystem3d& s, int i, int mu, int beta, const Eigen
     return energy;
 }
 
-std::vector<Sphere> bounding_spheres(const DpmSystem3d& s, const Eigen::VectorXd& x)
-{
-    std::vector<Sphere> spheres;
-    for (const Particle3d& p : s.particles)
-        spheres.push_back(bounding_sphere(s, p, x));
-    return spheres;
-}
-
-// Calls term(i, shift, sigma_mb) for every vertex i of particle mu and every image of particle beta whose
-// bounding sphere, widened by sigma_mb, holds the vertex.
+// The sum of term(near) over the ordered terms, taken per ordered particle pair (mu, beta) and then over
+// the pairs, in their order: the energy of each ordered pair is a quantity of its own
+// (smooth_vertex_surface_energy3d).
 template <class Term>
-void for_each_vertex_near(const DpmSystem3d& s, const std::vector<Sphere>& spheres, int mu, int beta,
-                          const Eigen::VectorXd& x, const Term& term)
+double sum_over_particle_pairs(const std::vector<NearSurface>& near, const Term& term)
 {
-    const Particle3d &a = s.particles[mu], &b = s.particles[beta];
-    const double sigma = 0.5 * (a.sigma + b.sigma);
-    const double reach = spheres[mu].radius + spheres[beta].radius + sigma;
-    for (const Eigen::Vector3d& shift : images_within(s, spheres[mu].centre, spheres[beta].centre, reach))
-        for (int i = a.first; i < a.first + a.count; ++i)
-            if ((x.segment<3>(3 * i) - spheres[beta].centre - shift).norm() < spheres[beta].radius + sigma)
-                term(i, shift, sigma);
+    double energy = 0;
+    for (auto first = near.begin(); first != near.end();) {
+        const auto last = std::find_if(first, near.end(), [&](const NearSurface& n) {
+            return n.mu != first->mu || n.beta != first->beta;
+        });
+        double pair = 0;
+        for (auto t = first; t != last; ++t)
+            pair += term(*t);
+        energy += pair;
+        first = last;
+    }
+    return energy;
 }
 
-// Every vertex of mu against the surface of beta (one ordered pair), with the 1/2 of eq. (9.5).
-double ordered_pair_energy(const DpmSystem3d& s, const std::vector<Sphere>& spheres, int mu, int beta,
-                           const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
-                           Eigen::Matrix3d* virial)
+// Calls touch(i, mu, beta) for every vertex i of particle mu within sigma_mb of the surface of an image of
+// particle beta (mu != beta), in (mu, beta, image, i) order: the contacts of the smooth interaction.
+template <class Touch>
+void for_each_smooth_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Touch& touch)
 {
-    const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5) on every ordered term (decision dpm-smooth-half)
-    double energy = 0;
-    for_each_vertex_near(s, spheres, mu, beta, x, [&](int i, const Eigen::Vector3d& shift, double sigma) {
-        energy += vertex_surface(s, i, mu, beta, shift, k, sigma, x, gradient, hessian, virial, [] {});
-    });
-    return energy;
+    const SmoothTerms terms = smooth_terms(s, x);
+    for (const NearSurface& near : terms.near)
+        vertex_surface(s, near, terms.range, 0.0, x, nullptr, nullptr, nullptr,
+                       [&] { touch(near.i, near.mu, near.beta); });
 }
 
 } // namespace
@@ -177,42 +215,22 @@ double smooth_interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& 
                                    HessianSink hessian, Eigen::Matrix3d* virial)
 {
     if (s.kc == 0) return 0;
-    const std::vector<Sphere> spheres = bounding_spheres(s, x);
-    double energy = 0;
-    const int n = static_cast<int>(s.particles.size());
-    for (int mu = 0; mu < n; ++mu)
-        for (int beta = 0; beta < n; ++beta)
-            if (mu != beta) energy += ordered_pair_energy(s, spheres, mu, beta, x, gradient, hessian, virial);
-    return energy;
+    const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5) on every ordered term (decision dpm-smooth-half)
+    const SmoothTerms terms = smooth_terms(s, x);
+    return sum_over_particle_pairs(terms.near, [&](const NearSurface& near) {
+        return vertex_surface(s, near, terms.range, k, x, gradient, hessian, virial, [] {});
+    });
 }
 
 double smooth_vertex_surface_energy3d(const DpmSystem3d& s, int mu, int beta, const Eigen::VectorXd& x)
 {
     if (mu == beta) throw std::logic_error("smooth_vertex_surface_energy3d: a particle against itself");
-    return ordered_pair_energy(s, bounding_spheres(s, x), mu, beta, x, nullptr, nullptr, nullptr);
+    SmoothTerms terms = smooth_terms(s, x);
+    std::erase_if(terms.near, [&](const NearSurface& n) { return n.mu != mu || n.beta != beta; });
+    return sum_over_particle_pairs(terms.near, [&](const NearSurface& n) {
+        return vertex_surface(s, n, terms.range, 0.5 * s.kc, x, nullptr, nullptr, nullptr, [] {});
+    });
 }
-
-namespace {
-
-// Calls touch(i, mu, beta) for every vertex i of particle mu within sigma_mb of the surface of an image of
-// particle beta (mu != beta), in (mu, beta, image, i) order: the contacts of the smooth interaction.
-template <class Touch>
-void for_each_smooth_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Touch& touch)
-{
-    const std::vector<Sphere> spheres = bounding_spheres(s, x);
-    const int n = static_cast<int>(s.particles.size());
-    for (int mu = 0; mu < n; ++mu)
-        for (int beta = 0; beta < n; ++beta) {
-            if (mu == beta) continue;
-            for_each_vertex_near(s, spheres, mu, beta, x,
-                                 [&](int i, const Eigen::Vector3d& shift, double sigma) {
-                                     vertex_surface(s, i, mu, beta, shift, 0.0, sigma, x, nullptr, nullptr,
-                                                    nullptr, [&] { touch(i, mu, beta); });
-                                 });
-        }
-}
-
-} // namespace
 
 std::vector<int> smooth_contact_counts3d(const DpmSystem3d& s, const Eigen::VectorXd& x)
 {

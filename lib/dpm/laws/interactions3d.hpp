@@ -164,7 +164,8 @@ struct PointSegmentSpring
 
 // Smooth interaction energy of a 3D system (the sum above over every ordered pair of different particles,
 // both ways, with the factor 1/2), in open space or the periodic box (Lees-Edwards sheared or not):
-// particle beta is taken at every periodic image within reach of particle mu (several in a small box). Adds
+// particle beta is taken at every periodic image within reach of a vertex of mu (several in a small box),
+// the terms found by the system's vertex list (vertex_pairs3d.hpp) and summed per ordered pair. Adds
 // the gradient and Hessian when given; `virial` accumulates the force moment sum_k y_k F_k^T of every term at
 // its imaged coordinates (the smooth analogue of the pair part of eq. 9.26, as eq. 9.26's text says for 2D).
 double smooth_interaction_energy3d(const DpmSystem3d& system, const Eigen::VectorXd& x,

@@ -48,8 +48,8 @@ struct DpmSystem3d
     double lees_edwards_strain = 0;
     // rough: vertex spheres (eqs. 9.3-9.4); smooth: vertex against faces (interactions3d.hpp); none: off.
     InteractionKind interaction = InteractionKind::rough;
-    // The vertex-level Verlet list of the rough interaction (vertex_pairs3d.hpp): a cache kept between
-    // evaluations (list_cache.hpp), which every rough contact loop traverses.
+    // The vertex-level Verlet list of the interaction (vertex_pairs3d.hpp): a cache kept between
+    // evaluations (list_cache.hpp), which every contact loop, rough or smooth, traverses.
     ListCache<VertexPairList3d, DpmSystem3d> contacts;
 
     int vertex_count() const

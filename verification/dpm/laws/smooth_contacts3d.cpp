@@ -11,7 +11,11 @@
 //     the energy of the same copies in open space;
 //   * a particle pressed on a flat mesh: the vertex-against-surface energy is the same wherever the contact
 //     point lies on the mesh (face interior, edge, vertex), while rough contacts corrugate (closed forms);
-//     a vertex pushed through a face is a NumericalError.
+//     a vertex pushed through a face is a NumericalError;
+//   * the terms found by the vertex-level Verlet list (vertex_pairs3d.hpp) give the energy of a sum over
+//     every particle pair, feature and image without any search, also where one vertex touches two images
+//     of a particle; energy, gradient, Hessian, virial and contact counts do not depend on when the list
+//     was built (bit for bit); the list takes the smooth range and refuses a box below it.
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "dpm/laws/interactions3d.hpp"
@@ -99,6 +103,50 @@ DpmSystem3d sheared_trio(Rng& rng, double gamma, Eigen::VectorXd& x)
         x(3 * v) += gamma * L;
     s.lees_edwards_strain = gamma;
     return s;
+}
+
+// The smooth interaction energy summed without any pair search: every vertex of every particle against
+// every face, edge and vertex of every other particle at every image n in {-2, ..., 2}^3 of the sheared
+// lattice, each term k_c/4 (sigma_mb - d)^2 Theta(sigma_mb - d) (the 1/2 of eq. 9.5 and the
+// inclusion-exclusion signs of interactions3d.hpp).
+double smooth_energy_over_all_images(const DpmSystem3d& s, const Eigen::VectorXd& x)
+{
+    const int reach = s.box ? 2 : 0;
+    const double L = s.box.value_or(0), gamma = s.lees_edwards_strain;
+    const auto term = [&](double d, double sigma) {
+        return d < sigma ? 0.25 * s.kc * (sigma - d) * (sigma - d) : 0.0;
+    };
+    double energy = 0;
+    for (const Particle3d& a : s.particles)
+        for (const Particle3d& b : s.particles) {
+            if (&a == &b) continue;
+            const TriangleMesh& mesh = s.meshes[b.mesh];
+            const double sigma = 0.5 * (a.sigma + b.sigma);
+            for (int nx = -reach; nx <= reach; ++nx)
+                for (int ny = -reach; ny <= reach; ++ny)
+                    for (int nz = -reach; nz <= reach; ++nz) {
+                        const Eigen::Vector3d shift((nx + ny * gamma) * L, ny * L, nz * L);
+                        const auto point = [&](int v) {
+                            return Eigen::Vector3d(x.segment<3>(3 * (b.first + v)) + shift);
+                        };
+                        for (int i = a.first; i < a.first + a.count; ++i) {
+                            const Eigen::Vector3d p = x.segment<3>(3 * i);
+                            for (const auto& f : mesh.faces) {
+                                Eigen::Matrix<double, 12, 1> local;
+                                local << p, point(f[0]), point(f[1]), point(f[2]);
+                                energy += term(point_triangle_distance(local), sigma);
+                            }
+                            for (const MeshEdge& e : mesh.edges) {
+                                Eigen::Matrix<double, 9, 1> local;
+                                local << p, point(e.a), point(e.b);
+                                energy -= term(point_segment_distance(local), sigma);
+                            }
+                            for (int v = 0; v < b.count; ++v)
+                                energy += term((point(v) - p).norm(), sigma);
+                        }
+                    }
+        }
+    return energy;
 }
 
 } // namespace
@@ -373,4 +421,107 @@ TEST_CASE(
     const double r = std::sqrt(h * h + 0.5);
     CHECK_CLOSE(interaction_energy3d(s, x, nullptr, nullptr), 4 * 0.5 * kc * (sigma - r) * (sigma - r),
                 (Tolerance{1e3 * round_off, 0}));
+}
+
+TEST_CASE("3D smooth contacts from the vertex list = every particle pair at every image, also where a vertex "
+          "sees two images of one particle [DPM sec. 9.3.2]")
+{
+    // The trio in open space, in the box of side 6.6 and in the box sheared by 0.37; a vertex that touches
+    // two images of one particle in a box of side 3.2, below twice the list's reach.
+    Rng rng(41);
+    std::vector<std::pair<DpmSystem3d, Eigen::VectorXd>> cases;
+    for (const bool periodic : {false, true}) {
+        Eigen::VectorXd x;
+        DpmSystem3d s = smooth_trio(rng, periodic, x);
+        cases.emplace_back(s, x);
+    }
+    {
+        Eigen::VectorXd x;
+        DpmSystem3d s = sheared_trio(rng, 0.37, x);
+        cases.emplace_back(s, x);
+    }
+    {
+        // A small icosahedron (circumradius 0.25) midway between two images of a unit one in a sheared box of
+        // side 3.2: the gap between their surfaces is 1.2 - 1.4 wide, so the small particle's vertices are
+        // within sigma_mb = 0.9 of both images.
+        DpmSystem3d s;
+        s.interaction = InteractionKind::smooth;
+        s.box = 3.2;
+        s.lees_edwards_strain = 0.02;
+        s.meshes.push_back(icosahedron_mesh());
+        Eigen::VectorXd x;
+        const Eigen::Vector3d centre(1.0, 1.6, 1.6);
+        s.add_particle(0, (random_rotation(rng) * s.meshes[0].vertices).colwise() + centre, 0.9,
+                       ShapeParameters3d{}, x);
+        s.add_particle(0,
+                       (0.25 * random_rotation(rng) * s.meshes[0].vertices).colwise() +
+                           (centre + Eigen::Vector3d(1.6, 0.1, 0)),
+                       0.9, ShapeParameters3d{}, x);
+        REQUIRE_FALSE(s.contacts.list(s, x)->one_image());
+        int images_touched = 0;
+        for (const auto& [vertex, particle] : touching_pairs3d(s, x))
+            images_touched += vertex == s.particles[1].first && particle == 0;
+        REQUIRE(images_touched == 2); // the small particle's first vertex touches both images
+        cases.emplace_back(s, x);
+    }
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        CAPTURE(c);
+        const auto& [s, x] = cases[c];
+        const double energy = interaction_energy3d(s, x, nullptr, nullptr);
+        CHECK(energy > 0);
+        // Sums of up to a few hundred terms of size k_c sigma^2 in another order.
+        CHECK_CLOSE(energy, smooth_energy_over_all_images(s, x), (Tolerance{1e3 * round_off, 0}));
+    }
+}
+
+TEST_CASE("3D smooth contacts: results do not depend on when the vertex list was built (bit for bit)")
+{
+    for (const double gamma : {0.0, 0.37}) {
+        CAPTURE(gamma);
+        Rng rng(43);
+        Eigen::VectorXd start;
+        DpmSystem3d s = sheared_trio(rng, gamma, start);
+        interaction_energy3d(s, start, nullptr, nullptr); // the list is built at `start`
+        const double skin = s.contacts.list(s, start)->skin();
+        // Each vertex moves less than skin/2 in the unsheared coordinates: (1 + gamma) sqrt(3) 0.15 skin.
+        Eigen::VectorXd moved = start;
+        for (Eigen::Index k = 0; k < moved.size(); ++k)
+            moved(k) += 0.15 * skin * rng.uniform(-1, 1);
+        const auto n = moved.size();
+        Eigen::VectorXd old_gradient = Eigen::VectorXd::Zero(n), fresh_gradient = Eigen::VectorXd::Zero(n);
+        Eigen::MatrixXd old_hessian = Eigen::MatrixXd::Zero(n, n),
+                        fresh_hessian = Eigen::MatrixXd::Zero(n, n);
+        Eigen::Matrix3d old_virial = Eigen::Matrix3d::Zero(), fresh_virial = Eigen::Matrix3d::Zero();
+        const double old_energy = interaction_energy3d(s, moved, &old_gradient, &old_hessian, &old_virial);
+        REQUIRE(s.contacts.builds() == 1);
+        DpmSystem3d fresh = s;
+        fresh.contacts = {};
+        const double fresh_energy =
+            interaction_energy3d(fresh, moved, &fresh_gradient, &fresh_hessian, &fresh_virial);
+        REQUIRE(fresh.contacts.builds() == 1);
+        CHECK(old_energy != interaction_energy3d(fresh, start, nullptr, nullptr)); // the motion matters
+        CHECK(old_energy == fresh_energy);
+        CHECK(old_gradient == fresh_gradient);
+        CHECK(old_hessian == fresh_hessian);
+        CHECK(old_virial == fresh_virial);
+        CHECK(contact_counts3d(s, moved) == contact_counts3d(fresh, moved));
+    }
+}
+
+TEST_CASE("3D vertex list: switching rough to smooth contacts rebuilds it with the smooth reach; a box "
+          "below the reach is a NumericalError")
+{
+    Rng rng(47);
+    Eigen::VectorXd x;
+    DpmSystem3d s = smooth_trio(rng, true, x);
+    s.interaction = InteractionKind::rough;
+    const double rough_range = s.contacts.list(s, x)->contact_range();
+    CHECK(rough_range == 0.9); // sigma_max
+    s.interaction = InteractionKind::smooth;
+    const double smooth_range = s.contacts.list(s, x)->contact_range();
+    CHECK(s.contacts.builds() == 2);
+    CHECK(smooth_range > rough_range + 1.05 / std::sqrt(3.0)); // plus the longest edge over sqrt 3
+    // The smooth reach (about 1.85 here) must stay below the box side.
+    *s.box = 0.95 * smooth_range;
+    CHECK_THROWS_AS(interaction_energy3d(s, x, nullptr, nullptr), NumericalError);
 }
