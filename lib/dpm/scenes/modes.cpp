@@ -36,7 +36,8 @@ struct ModesOptions
     ShapeStiffness stiffness;        // k_a = 1 sets the energy unit k_a a0^2
     double zero_threshold = 1e-13;   // [k_a a0]
     std::uint64_t seed = 1;
-    int lowest_modes = 0; // 0: every mode (dense)
+    int lowest_modes = 0;                     // 0: every mode (dense)
+    Relaxation relaxation = Relaxation::fire; // packings: the dpm.jam protocol's minimiser
 };
 
 OptionBinding<ModesOptions> modes_binding()
@@ -90,6 +91,7 @@ OptionBinding<ModesOptions> modes_binding()
             "non-zero "
             "mode (summary modes_computed)")
         .non_negative();
+    bind_relaxation(binding, &ModesOptions::relaxation, "packings: the dpm.jam protocol");
     binding.check([](const ModesOptions& options) {
         if (options.particles > 1) return;
         if (!options.model)
@@ -379,6 +381,7 @@ JamOptions packing_jam_options(const ModesOptions& options)
     jam.pressure_max = options.pressure;
     jam.pressures = 0;
     jam.seed = options.seed;
+    jam.relaxation = options.relaxation;
     return jam;
 }
 
@@ -417,6 +420,8 @@ void report_packing_modes(const ModesOptions& options, const PackingModes& resul
     summary["rattler_zero_modes"] = counts.zero - beyond_rattlers;
     summary["jam_seconds"] = result.jam_seconds;
     summary["fire_iterations"] = packing.fire_iterations;
+    summary["newton_steps"] = packing.newton_steps; // relaxation = fire_newton: the finisher's cost
+    summary["newton_factorizations"] = packing.factorizations;
     summary["zero_modes_without_rattlers"] = beyond_rattlers;
     summary["force_max"] = result.force_max;
     summary["pressure_reached"] = pressure(stress_tensor(packing.system, packing.x)) / packing.pressure_unit;
