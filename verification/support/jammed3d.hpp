@@ -89,4 +89,27 @@ inline dpm::DpmSystem3d random_sheared3d(dpm::ShapeModel model, Rng& rng, Eigen:
     return s;
 }
 
+// The interaction of `s` at `moved`, from the one list `s` has built (still valid there), against a list
+// built afresh at `moved`: energy, gradient, Hessian, virial and contact counts the same bit for bit, since
+// the contact loops' terms, order and images do not depend on the list (vertex_pairs3d.hpp).
+inline void check_same_with_fresh_list3d(const dpm::DpmSystem3d& s, const Eigen::VectorXd& moved)
+{
+    const auto n = moved.size();
+    Eigen::VectorXd old_gradient = Eigen::VectorXd::Zero(n), fresh_gradient = Eigen::VectorXd::Zero(n);
+    Eigen::MatrixXd old_hessian = Eigen::MatrixXd::Zero(n, n), fresh_hessian = Eigen::MatrixXd::Zero(n, n);
+    Eigen::Matrix3d old_virial = Eigen::Matrix3d::Zero(), fresh_virial = Eigen::Matrix3d::Zero();
+    const double old_energy = dpm::interaction_energy3d(s, moved, &old_gradient, &old_hessian, &old_virial);
+    REQUIRE(s.contacts.builds() == 1);
+    dpm::DpmSystem3d fresh = s;
+    fresh.contacts = {};
+    const double fresh_energy =
+        dpm::interaction_energy3d(fresh, moved, &fresh_gradient, &fresh_hessian, &fresh_virial);
+    REQUIRE(fresh.contacts.builds() == 1);
+    CHECK(old_energy == fresh_energy);
+    CHECK(old_gradient == fresh_gradient);
+    CHECK(old_hessian == fresh_hessian);
+    CHECK(old_virial == fresh_virial);
+    CHECK(dpm::contact_counts3d(s, moved) == dpm::contact_counts3d(fresh, moved));
+}
+
 } // namespace softgrain::verification

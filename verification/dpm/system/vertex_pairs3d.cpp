@@ -10,6 +10,7 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::check_same_with_fresh_list3d;
 using softgrain::verification::random_sheared3d;
 
 namespace {
@@ -78,19 +79,5 @@ TEST_CASE("3D vertex list: results do not depend on when the list was built (bit
         moved(k) += 0.2 * skin * rng.uniform(-1, 1);
     // Non-vacuous: the motion changes the contacts, and the old list must hold the new ones.
     REQUIRE(contact_total(s, moved) != contact_total(s, start));
-    const auto n = moved.size();
-    Eigen::VectorXd old_gradient = Eigen::VectorXd::Zero(n), fresh_gradient = Eigen::VectorXd::Zero(n);
-    Eigen::MatrixXd old_hessian = Eigen::MatrixXd::Zero(n, n), fresh_hessian = Eigen::MatrixXd::Zero(n, n);
-    Eigen::Matrix3d old_virial = Eigen::Matrix3d::Zero(), fresh_virial = Eigen::Matrix3d::Zero();
-    const double old_energy = interaction_energy3d(s, moved, &old_gradient, &old_hessian, &old_virial);
-    REQUIRE(s.contacts.builds() == 1);
-    DpmSystem3d fresh = s;
-    fresh.contacts = {};
-    const double fresh_energy =
-        interaction_energy3d(fresh, moved, &fresh_gradient, &fresh_hessian, &fresh_virial);
-    REQUIRE(fresh.contacts.builds() == 1);
-    CHECK(old_energy == fresh_energy);
-    CHECK(old_gradient == fresh_gradient);
-    CHECK(old_hessian == fresh_hessian);
-    CHECK(old_virial == fresh_virial);
+    check_same_with_fresh_list3d(s, moved);
 }
