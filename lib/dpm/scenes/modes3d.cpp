@@ -424,6 +424,9 @@ void report_packing_modes3d(const Modes3dOptions& options, const PackingModes3d&
     summary["saddle_escapes"] = packing.saddle_escapes;
     summary["window_jumps"] = packing.window_jumps;
     summary["fire_iterations"] = packing.fire_iterations;
+    summary["newton_steps"] = packing.newton_steps; // relaxation = fire_newton: the finisher's cost
+    summary["newton_factorizations"] = packing.factorizations;
+    summary["relax_seconds"] = packing.relax_seconds; // reported, never asserted
     summary["force_max"] = result.force_max / packing.pressure_unit;
 }
 
