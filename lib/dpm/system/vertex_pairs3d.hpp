@@ -3,7 +3,7 @@
 //
 // Candidates are the vertex pairs (i < j) of different particles within reach + skin, found by core's cell
 // list (NeighbourList<3>) in the coordinates u = (x - gamma y, y, z) with the Lees-Edwards shear undone
-// (gamma wrapped into [-1/2, 1/2]; decision dpm-3d-vertex-image), whose images form the plain cubic
+// (gamma wrapped into [-1/2, 1/2]; decision dpm-3d-lees-edwards), whose images form the plain cubic
 // lattice. A pair r apart in space is at most r (1 + |gamma|) apart there, so reach = c (1 + |gamma|) finds
 // every pair closer than c in space, with c the contact range of the interaction:
 //   rough (eq. 9.4): sigma_max, the largest sigma_mb = (sigma_mu + sigma_beta)/2;
