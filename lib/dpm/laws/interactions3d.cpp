@@ -119,11 +119,13 @@ Eigen::Matrix<double, 3 * K, 1> gather_shifted(const Eigen::VectorXd& x, const s
 // Vertex i against the surface of particle b at the translation `shift`: the inclusion-exclusion sum of
 // the header with spring constant k. Calls `contact()` once if the vertex is within sigma of the surface.
 // Terms go to the global arrays when given. A face, edge or vertex none of whose corners lies within
-// `range` (the list's contact range) is farther than sigma_mb and skipped unevaluated.
+// `range` (the list's contact range) is farther than sigma_mb and skipped unevaluated; `in_range` is the
+// caller's buffer for that test, kept over its terms.
 template <class OnContact>
-double vertex_surface(const DpmSystem3d& s, const NearSurface& near, double range, double k,
-                      const Eigen::VectorXd& x, Eigen::VectorXd* gradient, HessianSink hessian,
-                      Eigen::Matrix3d* virial, const OnContact& contact)
+double vertex_surface(const DpmSystem3d& s, const NearSurface& near, double range,
+                      std::vector<char>& in_range, double k, const Eigen::VectorXd& x,
+                      Eigen::VectorXd* gradient, HessianSink hessian, Eigen::Matrix3d* virial,
+                      const OnContact& contact)
 {
     const auto [mu, beta, image, i] = near;
     const Particle3d& b = s.particles[beta];
@@ -132,7 +134,7 @@ double vertex_surface(const DpmSystem3d& s, const NearSurface& near, double rang
     const TriangleMesh& mesh = s.meshes[b.mesh];
     const Eigen::Vector3d p = x.segment<3>(3 * i);
     const auto point = [&](int v) { return Eigen::Vector3d(x.segment<3>(3 * (b.first + v)) + shift); };
-    std::vector<char> in_range(static_cast<std::size_t>(b.count));
+    in_range.resize(static_cast<std::size_t>(b.count));
     for (int v = 0; v < b.count; ++v)
         in_range[v] = (point(v) - p).squaredNorm() < range * range;
     double energy = 0;
@@ -204,8 +206,9 @@ template <class Touch>
 void for_each_smooth_contact(const DpmSystem3d& s, const Eigen::VectorXd& x, const Touch& touch)
 {
     const SmoothTerms terms = smooth_terms(s, x);
+    std::vector<char> in_range; // vertex_surface's buffer, kept over the terms
     for (const NearSurface& near : terms.near)
-        vertex_surface(s, near, terms.range, 0.0, x, nullptr, nullptr, nullptr,
+        vertex_surface(s, near, terms.range, in_range, 0.0, x, nullptr, nullptr, nullptr,
                        [&] { touch(near.i, near.mu, near.beta); });
 }
 
@@ -217,8 +220,9 @@ double smooth_interaction_energy3d(const DpmSystem3d& s, const Eigen::VectorXd& 
     if (s.kc == 0) return 0;
     const double k = 0.5 * s.kc; // the 1/2 of eq. (9.5) on every ordered term (decision dpm-smooth-half)
     const SmoothTerms terms = smooth_terms(s, x);
+    std::vector<char> in_range;
     return sum_over_particle_pairs(terms.near, [&](const NearSurface& near) {
-        return vertex_surface(s, near, terms.range, k, x, gradient, hessian, virial, [] {});
+        return vertex_surface(s, near, terms.range, in_range, k, x, gradient, hessian, virial, [] {});
     });
 }
 
@@ -226,9 +230,10 @@ double smooth_vertex_surface_energy3d(const DpmSystem3d& s, int mu, int beta, co
 {
     if (mu == beta) throw std::logic_error("smooth_vertex_surface_energy3d: a particle against itself");
     SmoothTerms terms = smooth_terms(s, x);
+    std::vector<char> in_range;
     std::erase_if(terms.near, [&](const NearSurface& n) { return n.mu != mu || n.beta != beta; });
     return sum_over_particle_pairs(terms.near, [&](const NearSurface& n) {
-        return vertex_surface(s, n, terms.range, 0.5 * s.kc, x, nullptr, nullptr, nullptr, [] {});
+        return vertex_surface(s, n, terms.range, in_range, 0.5 * s.kc, x, nullptr, nullptr, nullptr, [] {});
     });
 }
 
