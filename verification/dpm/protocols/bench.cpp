@@ -1,8 +1,9 @@
 // dpm.bench (issue 19): a tiny run of each dimension through the scene API. Its costs are measured, never
 // asserted; what is checked is that its keys agree with each other and with the protocol they time: the
 // rates are the counts over relax_seconds, each relaxation evaluates the forces once more than it iterates,
-// the relaxations lie inside the protocol's time, the spectrum has one mode per degree of freedom, and the
-// FIRE iterations are those of the same protocol run directly (jam(), deterministic for a seed).
+// the relaxations lie inside the protocol's time, the dense spectrum has one mode per degree of freedom (the
+// lowest_modes ones of a tiling with replicate^dimension as many), and the FIRE iterations are those of the
+// same protocol run directly (jam(), deterministic for a seed).
 #include "core/errors.hpp"
 #include "core/output.hpp"
 #include "core/scene.hpp"
@@ -50,15 +51,24 @@ run_bench(const std::vector<std::pair<std::string, std::string>>& settings)
     return {summary, p};
 }
 
-// The relations between the cost keys of a summary (any dimension).
-void check_cost_keys(const nlohmann::json& s, int dimension, long vertices)
+// The relations between the cost keys of a summary (any dimension) whose spectrum was dense, of the jammed
+// packing itself, unless `lowest` modes of its tiling `replicate` times along each axis were asked for.
+void check_cost_keys(const nlohmann::json& s, int dimension, long vertices, long lowest = 0,
+                     long replicate = 1)
 {
     const double evaluations = s["force_evaluations"].get<double>(),
                  seconds = s["fire_seconds"].get<double>();
     CHECK(s["dimension"].get<int>() == dimension);
     CHECK(s["vertices"].get<long>() == vertices);
     CHECK(s["degrees_of_freedom"].get<long>() == dimension * vertices);
-    CHECK(s["spectrum_modes"].get<long>() == dimension * vertices);
+    long copies = 1;
+    for (int a = 0; a < dimension; ++a)
+        copies *= replicate;
+    CHECK(s["spectrum_degrees_of_freedom"].get<long>() == copies * dimension * vertices);
+    CHECK(s["spectrum_modes"].get<long>() == (lowest > 0 ? lowest : copies * dimension * vertices));
+    // Lanczos: at least one factorisation of M - sigma and one solve per mode; none for the dense spectrum.
+    CHECK((s["spectrum_factorizations"].get<long>() >= 1) == (lowest > 0));
+    CHECK(s["spectrum_solves"].get<long>() >= lowest);
     // One evaluation per iteration and one at the start of each relaxation (at least one relaxation).
     CHECK(s["fire_iterations"].get<long>() < s["force_evaluations"].get<long>());
     CHECK(s["steps"].get<long>() == s["fire_iterations"].get<long>());
@@ -131,6 +141,29 @@ TEST_CASE("dpm.bench in 3D: consistent cost keys on the 3D protocol [issue 19]")
                                          {"pressures", "1"},
                                          {"pressure_max", "2e-5"}});
     check_cost_keys(summary, 3, 4 * 12);
+}
+
+TEST_CASE("dpm.bench in 3D: the lowest modes of the jammed packing tiled 2 x 2 x 2 [issue 19]")
+{
+    const auto [summary, p] = run_bench({{"dimension", "3"},
+                                         {"model", "shell"},
+                                         {"particles", "4"},
+                                         {"nodes_small", "12"},
+                                         {"nodes_large", "12"},
+                                         {"pressure_onset", "1e-5"},
+                                         {"pressures", "1"},
+                                         {"pressure_max", "2e-5"},
+                                         {"replicate", "2"},
+                                         {"lowest_modes", "20"}});
+    check_cost_keys(summary, 3, 4 * 12, 20, 2);
+}
+
+TEST_CASE("dpm.bench refuses more lowest modes than the spectrum has degrees of freedom [issue 19]")
+{
+    // 6 shells of 6/8 vertices: 84 degrees of freedom, 336 tiled 2 x 2.
+    CHECK_THROWS_AS(run_bench(six_shells({{"lowest_modes", "84"}})), InputError);
+    CHECK_THROWS_AS(run_bench(six_shells({{"lowest_modes", "336"}, {"replicate", "2"}})), InputError);
+    CHECK_THROWS_AS(run_bench(six_shells({{"replicate", "0"}})), InputError);
 }
 
 TEST_CASE("dpm.bench in 3D refuses disks and vertex counts that name no mesh [issue 19]")
