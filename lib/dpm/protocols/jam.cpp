@@ -170,7 +170,8 @@ JamResult jam(const JamOptions& options)
         throw InputError("relaxation = 'fire_newton' with model = 'rough_disk': rigid polygons relax over "
                          "rigid-body coordinates, with FIRE alone (allowed: fire)");
     FireOptions& fire = out.fire;
-    fire.dt_max = std::min(0.5, 0.3 / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
+    fire.dt_max =
+        std::min(0.5, options.fire_step / std::sqrt(vibrational_modes(s, out.x).eigenvalues.maxCoeff()));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
     const RelaxOptions relax_options{options.relaxation, fire};

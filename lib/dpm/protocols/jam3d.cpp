@@ -105,7 +105,7 @@ Jam3dResult jam3d(const Jam3dOptions& options)
     // FIRE: time step from the stiffest mode at the start (as in 2D), tolerance 1e-4 P_t (in k_c sigma).
     FireOptions& fire = out.fire;
     const double stiffest = std::max(s.kc, largest_eigenvalue3d(s, out.x, options.hessian));
-    fire.dt_max = std::min(0.5, 0.3 / std::sqrt(stiffest));
+    fire.dt_max = std::min(0.5, options.fire_step / std::sqrt(stiffest));
     fire.dt_initial = 0.25 * fire.dt_max;
     fire.force_tolerance = 1e-4 * options.pressure_onset * out.pressure_unit;
     fire.max_iterations = options.fire_budget;

@@ -2,7 +2,7 @@
 //
 // dimension = 2: the dpm.jam protocol (jam.hpp) with dpm.jam's parameters. dimension = 3: the 3D protocol
 // (jam3d.hpp) with the same parameters mapped onto it: model, particles, seed, relaxation, pressure_onset,
-// pressure_max and pressures (in k_v v0), A0 (as A0^3D) as they are; both particle sizes on one mesh
+// pressure_max and pressures (in k_v v0), A0 (as A0^3D), fire_step as they are; both particle sizes on one mesh
 // whose vertex count nodes_small = nodes_large names it (mesh_for_nodes); rough contacts as in 2D; the rest
 // (stiffnesses, FIRE budget, saddle escapes, size ratio 1.4) at the protocol's defaults; kl_surface has no
 // 3D counterpart. Reported (summary.json): jam_seconds (the whole protocol, wall time) and jam_cpu_seconds
@@ -104,6 +104,7 @@ Jam3dOptions jam_options_3d(const JamOptions& options, HessianStorage hessian)
     options3d.seed = options.seed;
     options3d.interaction = InteractionKind::rough;
     options3d.relaxation = options.relaxation;
+    options3d.fire_step = options.fire_step;
     options3d.hessian = hessian;
     return options3d;
 }

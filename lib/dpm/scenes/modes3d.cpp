@@ -108,6 +108,7 @@ OptionBinding<Modes3dOptions> modes3d_binding()
                  "first state is kept. Summary saddle_escapes: the moves made")
         .non_negative();
     bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "packing: the 3D jamming protocol");
+    bind_fire_step(binding, jam(&Jam3dOptions::fire_step));
     bind_hessian_storage(binding, jam(&Jam3dOptions::hessian), "hessian",
                          "packing: the jamming protocol's FIRE time step and saddle tests (the spectrum "
                          "follows lowest_modes)");

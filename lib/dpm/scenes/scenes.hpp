@@ -58,6 +58,20 @@ void bind_relaxation(OptionBinding<Options>& binding, RelaxationField relaxation
                        (note.empty() ? std::string() : "; " + note) + ")");
 }
 
+// FIRE's largest time step of a jamming protocol in units of 1/omega_max (JamOptions::fire_step,
+// Jam3dOptions::fire_step), bound to `step` (a field of Options).
+template <class Options, class StepField>
+void bind_fire_step(OptionBinding<Options>& binding, StepField step)
+{
+    binding
+        .real(step, "fire_step", "1",
+              "FIRE's largest time step of the jamming protocol, dt_max = fire_step / sqrt(lambda_max) with "
+              "lambda_max the largest Hessian eigenvalue at the random start (and dt_max <= 0.5); below "
+              "velocity Verlet's stability limit 2")
+        .positive()
+        .below(2.0);
+}
+
 // The storage of a 3D packing's Hessian (packing_hessian3d.hpp), bound to `storage` (a field of Options)
 // under `name`; `uses` says what the scene takes it for.
 template <class Options, class StorageField>
@@ -111,6 +125,7 @@ void bind_jam_protocol(OptionBinding<Options>& binding, JamField jam)
               "surface_tension: edge stiffness k_l (Table 9.1: ~0; decision dpm-jam-surface-kl)")
         .non_negative();
     bind_relaxation(binding, field(&JamOptions::relaxation), "rough_disk: fire only");
+    bind_fire_step(binding, field(&JamOptions::fire_step));
 }
 
 // A bidisperse packing of the parameters particles, nodes_small and nodes_large: half small and half large

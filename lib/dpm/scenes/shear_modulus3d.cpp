@@ -117,6 +117,7 @@ OptionBinding<ShearModulus3dOptions> shear_modulus3d_binding()
               "at round-off, usually far below)")
         .positive();
     bind_relaxation(binding, jam(&Jam3dOptions::relaxation), "the jamming protocol");
+    bind_fire_step(binding, jam(&Jam3dOptions::fire_step));
     bind_hessian_storage(binding, jam(&Jam3dOptions::hessian), "hessian",
                          "the jamming protocol's FIRE time step and saddle tests and of the Newton steps "
                          "after each shear step");

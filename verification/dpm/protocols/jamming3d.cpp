@@ -83,3 +83,25 @@ TEST_CASE(
     const auto modes = check_jammed3d(j, o.pressure_onset);
     CHECK(modes.zero_modes == 3 + 6 * modes.rattlers);
 }
+
+// fire_step sets FIRE's largest step, dt_max = fire_step / sqrt(lambda_max at the start) (below the cap
+// 0.5), and a packing jammed with three times the default step ends jammed all the same (force balance at
+// 1 <= P/P_t < 1.01, no negative mode, 3 zero modes plus 6 per rattler). The ratio of the two steps is a
+// quotient of the same square root: exact to 2 eps.
+TEST_CASE("3D jamming with fire_step = 0.9: three times FIRE's default step, and a jammed packing")
+{
+    Jam3dOptions o;
+    o.particles = 4;
+    o.mesh = "icosahedron";
+    o.pressure_onset = 1e-5;
+    o.seed = 3;
+    const Jam3dResult reference = jam3d(o);
+    o.fire_step = 0.9;
+    Jam3dResult j = jam3d(o);
+    REQUIRE(j.fire.dt_max < 0.5);
+    CHECK_CLOSE(j.fire.dt_max, 3 * reference.fire.dt_max, (Tolerance{2 * round_off, 0}));
+    MESSAGE("FIRE iterations " << j.fire_iterations << " against " << reference.fire_iterations
+                               << " with the default step");
+    const auto modes = check_jammed3d(j, o.pressure_onset);
+    CHECK(modes.zero_modes == 3 + 6 * modes.rattlers);
+}
