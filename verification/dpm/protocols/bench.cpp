@@ -99,6 +99,17 @@ six_shells(std::vector<std::pair<std::string, std::string>> extra = {})
     return settings;
 }
 
+// The 3D case: 4 shell icosahedra jammed at P_t = 1e-5 k_v v0, one target above; plus `extra`.
+std::vector<std::pair<std::string, std::string>>
+four_icosahedra(std::vector<std::pair<std::string, std::string>> extra = {})
+{
+    std::vector<std::pair<std::string, std::string>> settings{
+        {"dimension", "3"},    {"model", "shell"},         {"particles", "4"}, {"nodes_small", "12"},
+        {"nodes_large", "12"}, {"pressure_onset", "1e-5"}, {"pressures", "1"}, {"pressure_max", "2e-5"}};
+    settings.insert(settings.end(), extra.begin(), extra.end());
+    return settings;
+}
+
 } // namespace
 
 TEST_CASE("dpm.bench in 2D: consistent cost keys, and the FIRE iterations of dpm.jam's protocol [issue 19]")
@@ -132,29 +143,13 @@ TEST_CASE("dpm.bench in 2D with relaxation = fire_newton: the finisher's counts 
 
 TEST_CASE("dpm.bench in 3D: consistent cost keys on the 3D protocol [issue 19]")
 {
-    const auto [summary, p] = run_bench({{"dimension", "3"},
-                                         {"model", "shell"},
-                                         {"particles", "4"},
-                                         {"nodes_small", "12"},
-                                         {"nodes_large", "12"},
-                                         {"pressure_onset", "1e-5"},
-                                         {"pressures", "1"},
-                                         {"pressure_max", "2e-5"}});
+    const auto [summary, p] = run_bench(four_icosahedra());
     check_cost_keys(summary, 3, 4 * 12);
 }
 
 TEST_CASE("dpm.bench in 3D: the lowest modes of the jammed packing tiled 2 x 2 x 2 [issue 19]")
 {
-    const auto [summary, p] = run_bench({{"dimension", "3"},
-                                         {"model", "shell"},
-                                         {"particles", "4"},
-                                         {"nodes_small", "12"},
-                                         {"nodes_large", "12"},
-                                         {"pressure_onset", "1e-5"},
-                                         {"pressures", "1"},
-                                         {"pressure_max", "2e-5"},
-                                         {"replicate", "2"},
-                                         {"lowest_modes", "20"}});
+    const auto [summary, p] = run_bench(four_icosahedra({{"replicate", "2"}, {"lowest_modes", "20"}}));
     check_cost_keys(summary, 3, 4 * 12, 20, 2);
 }
 
