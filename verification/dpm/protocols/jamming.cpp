@@ -10,6 +10,7 @@
 
 using namespace softgrain;
 using namespace softgrain::dpm;
+using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
 TEST_CASE(
@@ -110,4 +111,32 @@ TEST_CASE("fit_compression_branch: B and the exponent of an exact power law over
     const CompressionBranchFit single = fit_compression_branch({states[0], states[1], states[4]});
     CHECK_FALSE(single.bulk_modulus.has_value());
     CHECK_FALSE(single.pressure_exponent.has_value());
+}
+
+// fire_step sets FIRE's largest step in 2D as in 3D (jamming3d.cpp): dt_max = fire_step / sqrt(lambda_max
+// at the start) below the cap 0.5, so 0.9 gives three times the default 0.3 (a quotient of the same square
+// root: 2 eps), and the packing still ends in the window 1 <= P/P_t < 1.01 with its rms force below FIRE's
+// tolerance.
+TEST_CASE("2D jamming with fire_step = 0.9: three times FIRE's default step, and a jammed packing")
+{
+    JamOptions o;
+    o.model = JamModel::shell;
+    o.particles = 8;
+    o.nodes_small = 6;
+    o.nodes_large = 10;
+    o.pressure_onset = o.pressure_max = 1e-5;
+    o.pressures = 0;
+    o.seed = 2;
+    const JamResult reference = jam(o);
+    o.fire_step = 0.9;
+    const JamResult r = jam(o);
+    REQUIRE(r.fire.dt_max < 0.5);
+    CHECK_CLOSE(r.fire.dt_max, 3 * reference.fire.dt_max, (Tolerance{2 * round_off, 0}));
+    MESSAGE("FIRE iterations " << r.fire_iterations << " against " << reference.fire_iterations
+                               << " with the default step");
+    CHECK(r.states.front().pressure >= o.pressure_onset);
+    CHECK(r.states.front().pressure < 1.01 * o.pressure_onset);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(r.x.size());
+    total_energy(r.system, r.x, &g, nullptr);
+    CHECK(g.norm() / std::sqrt(double(g.size())) < r.fire.force_tolerance);
 }
