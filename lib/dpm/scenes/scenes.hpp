@@ -66,8 +66,8 @@ void bind_fire_step(OptionBinding<Options>& binding, StepField step)
     binding
         .real(step, "fire_step", "1",
               "FIRE's largest time step of the jamming protocol, dt_max = fire_step / sqrt(lambda_max) with "
-              "lambda_max the largest Hessian eigenvalue at the random start (and dt_max <= 0.5); below "
-              "velocity Verlet's stability limit 2")
+              "lambda_max the largest Hessian eigenvalue at the random start (in 3D at least k_c), and "
+              "dt_max <= 0.5; below velocity Verlet's stability limit 2")
         .positive()
         .below(2.0);
 }
