@@ -19,41 +19,55 @@ using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::Tolerance;
 
-TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rattler, exactly [DPM sec. "
-          "9.4.3, Fig. 9.14b]")
+// The vertex contacts that touch a rattler.
+int rattler_contact_count(const JamResult& r, const std::vector<bool>& rattling)
 {
-    struct Case
-    {
-        int particles;
-        std::uint64_t seed;
-    };
-    for (const Case c : {Case{16, 2}, Case{12, 3}}) {
-        CAPTURE(c.particles);
-        CAPTURE(c.seed);
+    int count = 0;
+    for (const VertexContact& contact : vertex_contacts(r.system, r.x))
+        if (rattling[contact.a] || rattling[contact.b]) ++count;
+    return count;
+}
+
+TEST_CASE("jammed surface-tension packing: 2 translations + 3 zero modes per rattler, less one per "
+          "rattler contact [DPM sec. 9.4.3, Fig. 9.14b]")
+{
+    // Which packing FIRE reaches from a seed, and whether it has rattlers, depends on the protocol's path
+    // (FIRE's step among others), so each size takes the first seed whose packing has a rattler.
+    for (const int particles : {16, 12}) {
+        CAPTURE(particles);
         JamOptions o;
         o.model = JamModel::surface_tension;
-        o.particles = c.particles;
+        o.particles = particles;
         o.nodes_small = 6;
         o.nodes_large = 10;
         o.pressure_onset = o.pressure_max = 1e-5;
         o.pressures = 0;
-        o.seed = c.seed;
-        JamResult r = jam(o);
-        const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
+        JamResult r;
+        double force = 0;
+        std::vector<bool> rattling;
+        for (o.seed = 1; o.seed <= 20; ++o.seed) {
+            r = jam(o);
+            force = polish_for_modes(r.system, r.x, r.pressure_unit);
+            rattling = rattlers(r.system, r.x, force);
+            if (std::find(rattling.begin(), rattling.end(), true) != rattling.end()) break;
+        }
+        CAPTURE(o.seed);
+        REQUIRE(o.seed <= 20); // a packing with a rattler among seeds 1-20
+        const int rattler_contacts = rattler_contact_count(r, rattling);
         const ModeSpectrum modes = vibrational_modes(r.system, r.x);
         const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;
         const double threshold = zero_mode_threshold(lambda, 1e-13);
         const int zero = count_zero_modes(lambda, threshold);
-        const std::vector<bool> rattling = rattlers(r.system, r.x, force);
         const Eigen::MatrixXd zero_space = modes.eigenvectors.leftCols(zero);
         const int rattler_count = static_cast<int>(std::count(rattling.begin(), rattling.end(), true));
-        MESSAGE("zero modes " << zero << ", rattlers " << rattler_count << ", largest |zero| "
-                              << lambda.head(zero).cwiseAbs().maxCoeff() << ", smallest non-zero "
-                              << lambda(zero) << ", threshold " << threshold);
-        CHECK(rattler_count > 0); // the cases are chosen to have rattlers
+        MESSAGE("seed " << o.seed << ": zero modes " << zero << ", rattlers " << rattler_count
+                        << ", their contacts " << rattler_contacts << ", largest |zero| "
+                        << lambda.head(zero).cwiseAbs().maxCoeff() << ", smallest non-zero " << lambda(zero)
+                        << ", threshold " << threshold);
         CHECK(zero_modes_beyond_rattlers(r.system, zero_space, rattling) == 2);
-        // These rattlers touch nothing, so each keeps the 3 rigid motions of a free particle (Fig. 9.14a).
-        CHECK(zero == 2 + 3 * rattler_count);
+        // A free rattler keeps the 3 rigid motions of a free particle (Fig. 9.14a); each contact of vanishing
+        // force but full stiffness fixes one of them (the next test case).
+        CHECK(zero == 2 + 3 * rattler_count - rattler_contacts);
         // A minimum: no eigenvalue below minus the threshold (an unbalanced rattler's rotation can be
         // negative). The count does not depend on where the threshold sits: the paper's 1e-13 gives the same
         // (the zero modes are at ~1e-15, below both), and the softest non-zero mode, a contact mode of
@@ -86,7 +100,7 @@ TEST_CASE("rattlers held by a contact of vanishing force keep 3 rigid motions le
     // rattler would miss the contacts. Which packing FIRE reaches from a seed, and whether its rattlers touch,
     // changes with the order of round-off in the forces, so the test takes the first seed whose packing has
     // such a touching rattler (seed 11 at 6cc1e52, where two rattlers touched each other through one vertex
-    // pair: 7 zero modes).
+    // pair: 7 zero modes; seed 16 at ab47b2c, one rattler held by two contacts: 3 zero modes).
     JamOptions o;
     o.model = JamModel::shell;
     o.particles = 8;
@@ -98,9 +112,7 @@ TEST_CASE("rattlers held by a contact of vanishing force keep 3 rigid motions le
         JamResult r = jam(o);
         const double force = polish_for_modes(r.system, r.x, r.pressure_unit);
         const std::vector<bool> rattling = rattlers(r.system, r.x, force);
-        int rattler_contacts = 0;
-        for (const VertexContact& contact : vertex_contacts(r.system, r.x))
-            if (rattling[contact.a] || rattling[contact.b]) ++rattler_contacts;
+        const int rattler_contacts = rattler_contact_count(r, rattling);
         if (rattler_contacts == 0) continue;
         const ModeSpectrum modes = vibrational_modes(r.system, r.x);
         const Eigen::VectorXd lambda = modes.eigenvalues / r.pressure_unit;

@@ -6,19 +6,28 @@
 #include "dpm/protocols/jam.hpp"
 #include "support/tolerance.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::round_off;
 using softgrain::verification::Tolerance;
 
+// zeta = 1 for linear springs holds on a branch of fixed contact network. A single packing that rearranges
+// on its branch (phi jumps at fixed P) fits a lower exponent: among seeds 1-20 of this setting, 2 packings
+// did (0.86 and 0.82 with FIRE's step 0.3; 0.77 and 0.88 with 1), the other 18 lay within 0.025 of 1. So the
+// test takes the median over 20 packings, the typical branch, as the paper's ensemble mean <P> is over
+// many. The onset pressure P_t = 1e-6 not being zero (phi_c is the phi at P_t) bends the branch:
+// P = B (phi - phi_c + P_t/B) gives at the targets 10, 100, 1000 P_t the excess packing fractions 9, 99, 999
+// P_t/B, whose fitted exponent is 0.976; tolerance 0.05, twice that bias.
 TEST_CASE(
     "smooth bidisperse disks: phi_c ~ 0.84 and P = B (phi - phi_c)^zeta with zeta = 1 [DPM Fig. 9.13(a)]")
 {
-    double phi_sum = 0;
-    const int seeds = 3;
-    for (int seed = 1; seed <= seeds; ++seed) {
+    std::vector<double> phi_c, zeta;
+    for (int seed = 1; seed <= 20; ++seed) {
         JamOptions o;
         o.particles = 64;
         o.pressure_onset = 1e-6;
@@ -26,25 +35,21 @@ TEST_CASE(
         o.pressures = 3;
         o.seed = static_cast<std::uint64_t>(seed);
         const JamResult r = jam(o);
-        const double phi_c = r.states.front().phi;
-        phi_sum += phi_c;
+        CAPTURE(seed);
         // The onset state satisfies the protocol's window 1 <= P/P_t < 1.01.
         CHECK(r.states.front().pressure >= o.pressure_onset);
         CHECK(r.states.front().pressure < 1.01 * o.pressure_onset);
-        std::vector<double> excess_packing_fraction, pressures;
-        for (std::size_t k = 1; k < r.states.size(); ++k) {
-            excess_packing_fraction.push_back(r.states[k].phi - phi_c);
-            pressures.push_back(r.states[k].pressure);
-        }
-        const double zeta = fit_power_law_exponent(excess_packing_fraction, pressures).value();
-        CAPTURE(seed);
-        // zeta = 1 for linear springs; single packings deviate by rearrangements and by the onset pressure
-        // 1e-6 not being zero (phi_c is the phi at P_t): 0.1.
-        CHECK_CLOSE(zeta, 1.0, (Tolerance{0, 0.1}));
+        phi_c.push_back(r.states.front().phi);
+        zeta.push_back(fit_compression_branch(r.states).pressure_exponent.value());
     }
-    // N = 64: the onset of single packings scatters by ~0.01 (finite size); the mean of 3 within 0.015 of
+    std::vector<double> sorted = zeta;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = 0.5 * (sorted[9] + sorted[10]);
+    MESSAGE("exponents from " << sorted.front() << " to " << sorted.back() << ", median " << median);
+    CHECK_CLOSE(median, 1.0, (Tolerance{0, 0.05}));
+    // N = 64: the onset of single packings scatters by ~0.01 (finite size); the mean of 20 within 0.015 of
     // the large-N value 0.84 (paper: 0.836 for N = 128 over 500 packings).
-    CHECK_CLOSE(phi_sum / seeds, 0.84, (Tolerance{0, 0.015}));
+    CHECK_CLOSE(std::accumulate(phi_c.begin(), phi_c.end(), 0.0) / 20, 0.84, (Tolerance{0, 0.015}));
 }
 
 TEST_CASE(
