@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/fits.hpp"
 #include "dpm/analysis/stress.hpp"
+#include "dpm/relax/newton_relax.hpp"
 
 #include <sstream>
 #include <string>
@@ -16,6 +17,10 @@ ShearModulusResult shear_modulus(const ShearablePacking& packing, Eigen::VectorX
     std::vector<double> strain;
     const auto minimise = [&](int step) {
         out.force_max = packing.minimise(x, force_tolerance);
+        if (!(out.force_max < force_tolerance) && packing.relax) { // Newton crawls: FIRE first (header)
+            packing.relax(x, 1e-3 * force_tolerance);
+            out.force_max = packing.minimise(x, 1e-4 * force_tolerance);
+        }
         if (!(out.force_max < force_tolerance)) {
             std::ostringstream what;
             what << "Newton minimisation after a shear step (largest force " << out.force_max << ")";
@@ -46,8 +51,27 @@ ShearStepObserver observing(const System& system, const ShearedSystemObserver<Sy
     };
 }
 
+// FIRE from y to an rms force below `tolerance` with the settings `fire` (the fallback of shear_modulus);
+// empty without settings. NumericalError if FIRE does not converge.
+template <class System>
+std::function<void(Eigen::VectorXd&, double)> fire_fallback(const System& system,
+                                                            const std::optional<FireOptions>& fire)
+{
+    if (!fire) return {};
+    return [&system, fire](Eigen::VectorXd& y, double tolerance) {
+        RelaxOptions options{Relaxation::fire, *fire};
+        options.fire.force_tolerance = tolerance;
+        const RelaxResult r = relax(system, y, options);
+        if (!r.converged)
+            throw NumericalError("FIRE before the Newton minimisation of a shear step (" +
+                                     relax_shortfall(r, options) + ")",
+                                 0, "the packing is not at a minimum");
+    };
+}
+
 ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dgamma, int steps,
-                                 double force_tolerance, const ShearedSystemObserver<DpmSystem>& observe)
+                                 double force_tolerance, const ShearedSystemObserver<DpmSystem>& observe,
+                                 const std::optional<FireOptions>& fire)
 {
     const ShearablePacking packing{
         [&system](Eigen::VectorXd& y, double tolerance) { return polish_newton(system, y, tolerance, 30); },
@@ -55,13 +79,14 @@ ShearModulusResult shear_modulus(DpmSystem system, Eigen::VectorXd x, double dga
         [&system](const Eigen::VectorXd& y) {
             const Eigen::Matrix2d sigma = stress_tensor(system, y);
             return -0.5 * (sigma(0, 1) + sigma(1, 0)); // symmetric at equilibrium
-        }};
+        },
+        fire_fallback(system, fire)};
     return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance, observing(system, observe));
 }
 
 ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double dgamma, int steps,
                                  double force_tolerance, const ShearedSystemObserver<DpmSystem3d>& observe,
-                                 HessianStorage storage)
+                                 HessianStorage storage, const std::optional<FireOptions>& fire)
 {
     const ShearablePacking packing{
         [&system, storage](Eigen::VectorXd& y, double tolerance) {
@@ -71,7 +96,8 @@ ShearModulusResult shear_modulus(DpmSystem3d system, Eigen::VectorXd x, double d
         [&system](const Eigen::VectorXd& y) {
             const Eigen::Matrix3d sigma = stress_tensor3d(system, y);
             return -0.5 * (sigma(0, 1) + sigma(1, 0));
-        }};
+        },
+        fire_fallback(system, fire)};
     return shear_modulus(packing, std::move(x), dgamma, steps, force_tolerance, observing(system, observe));
 }
 

@@ -42,13 +42,14 @@ using StateShearObserver = std::function<void(std::size_t state, int step, const
 
 // G at every state of a jamming run; a state has x, box, pressure and phi (JamState, Jam3dState);
 // pressure_unit: the model's pressure unit in the system's stress unit; force_tolerance in the model's
-// pressure unit (times length), as the scenes take it; storage: in 3D, the Hessian of the Newton steps
-// (shear_modulus.hpp).
+// pressure unit (times length), as the scenes take it; storage: in 3D, the Hessian of the Newton steps;
+// fire: the jamming protocol's FIRE settings, for the fallback where Newton falls short (shear_modulus.hpp).
 template <class System, class States>
 ModulusMember moduli_at_states(System system, const States& states, double pressure_unit, double dgamma,
                                int steps, double force_tolerance,
                                const StateShearObserver<System>& observe = {},
-                               HessianStorage storage = HessianStorage::automatic)
+                               HessianStorage storage = HessianStorage::automatic,
+                               const std::optional<FireOptions>& fire = {})
 {
     ModulusMember m;
     for (std::size_t k = 0; k < states.size(); ++k) {
@@ -61,9 +62,9 @@ ModulusMember moduli_at_states(System system, const States& states, double press
         const double tolerance = force_tolerance * pressure_unit;
         ShearModulusResult g;
         if constexpr (std::is_same_v<System, DpmSystem3d>)
-            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state, storage);
+            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state, storage, fire);
         else
-            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state);
+            g = shear_modulus(system, state.x, dgamma, steps, tolerance, at_state, fire);
         m.pressure.push_back(state.pressure);
         m.phi.push_back(state.phi);
         m.modulus.push_back(g.modulus / pressure_unit);

@@ -96,8 +96,9 @@ void run_shear_modulus(const ShearModulusOptions& options, RunContext& context)
         const StateShearObserver<DpmSystem> frames =
             k == 0 && context.vtk() ? frame_writer(*context.vtk(), jammed.states, steps, jammed.pressure_unit)
                                     : StateShearObserver<DpmSystem>{};
-        ModulusMember member = moduli_at_states(jammed.system, jammed.states, jammed.pressure_unit, dgamma,
-                                                steps, tolerance, frames);
+        ModulusMember member =
+            moduli_at_states(jammed.system, jammed.states, jammed.pressure_unit, dgamma, steps, tolerance,
+                             frames, HessianStorage::automatic, jammed.fire);
         member.fire_iterations = jammed.fire_iterations;
         return member;
     });

@@ -174,9 +174,9 @@ ShearModulus3dResult shear_modulus3d(const ShearModulus3dOptions& options, bool 
             member.model = options.models[static_cast<std::size_t>(i / packings)];
             member.seed = options.jam.seed + static_cast<std::uint64_t>(i % packings);
             const Jam3dResult packing = jam3d(member);
-            ModulusMember measured =
-                moduli_at_states(packing.system, packing.states, packing.pressure_unit, options.strain_step,
-                                 options.strain_steps, options.force_tolerance, {}, member.hessian);
+            ModulusMember measured = moduli_at_states(
+                packing.system, packing.states, packing.pressure_unit, options.strain_step,
+                options.strain_steps, options.force_tolerance, {}, member.hessian, packing.fire);
             measured.fire_iterations = packing.fire_iterations;
             if (i == 0 && keep_drawn) result.drawn = packing;
             return measured;
