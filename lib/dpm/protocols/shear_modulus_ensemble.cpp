@@ -2,22 +2,38 @@
 
 #include "core/fits.hpp"
 #include "core/output.hpp"
+#include "dpm/analysis/stress.hpp"
 
 #include <cmath>
 
 namespace softgrain::dpm {
 
+double smallest_normal_stress(const DpmSystem& system, const Eigen::VectorXd& x)
+{
+    const Eigen::Matrix2d sigma = stress_tensor(system, x);
+    return sigma.diagonal().minCoeff() / pressure(sigma);
+}
+
+double smallest_normal_stress(const DpmSystem3d& system, const Eigen::VectorXd& x)
+{
+    const Eigen::Matrix3d sigma = stress_tensor3d(system, x);
+    return sigma.diagonal().minCoeff() / pressure3d(sigma);
+}
+
 EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
                                 RunContext& context)
 {
     const std::string& unit = tables.pressure_unit;
-    auto& each =
-        context.table(tables.per_packing, {{"packing", "1", "ensemble member (seed - first seed)"},
-                                           {"P", unit, tables.pressure_meaning},
-                                           {"phi", "1", "packing fraction"},
-                                           {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"},
-                                           {"G_linear", unit, "linear response G_affine - Xi^T H^+ Xi"},
-                                           {"negative_modes", "1", "negative eigenvalues of H"}});
+    auto& each = context.table(tables.per_packing,
+                               {{"packing", "1", "ensemble member (seed - first seed)"},
+                                {"P", unit, tables.pressure_meaning},
+                                {"phi", "1", "packing fraction"},
+                                {"G", unit, "shear modulus d(-Sigma_xy)/d gamma"},
+                                {"G_linear", unit, "linear response G_affine - Xi^T H^+ Xi"},
+                                {"stress_min", "1",
+                                 "smallest normal stress min_a Sigma_aa over the pressure: about 1 "
+                                 "jammed along every axis, ~0 along fewer (then G can vanish)"},
+                                {"negative_modes", "1", "negative eigenvalues of H"}});
     EnsembleModulus out;
     const auto packings = static_cast<double>(members.size());
     const std::size_t levels = members.front().pressure.size();
@@ -28,7 +44,7 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
         out.force_max = std::max(out.force_max, m.force_max);
         for (std::size_t l = 0; l < levels; ++l) {
             each.row({double(k), m.pressure[l], m.phi[l], m.modulus[l], m.modulus_linear[l],
-                      double(m.negative_modes[l])});
+                      m.normal_stress_min[l], double(m.negative_modes[l])});
             mean_p[l] += m.pressure[l] / packings;
             mean_g[l] += m.modulus[l] / packings;
             mean_linear[l] += m.modulus_linear[l] / packings;

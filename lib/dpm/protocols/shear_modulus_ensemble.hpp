@@ -23,17 +23,26 @@ namespace softgrain::dpm {
 
 // One packing of the ensemble: its pressures (onset first), packing fractions and shear moduli, in the
 // model's pressure unit: `modulus` from the strain steps, `modulus_linear` the linear response at the
-// same equilibrium (linear_shear_modulus.hpp), with the negative modes of its Hessian (a saddle).
+// same equilibrium (linear_shear_modulus.hpp), with the negative modes of its Hessian (a saddle), and the
+// smallest normal stress over the pressure (smallest_normal_stress).
 struct ModulusMember
 {
-    std::vector<double> pressure, phi, modulus, modulus_linear;
+    std::vector<double> pressure, phi, modulus, modulus_linear, normal_stress_min;
     std::vector<int> negative_modes;
     long fire_iterations = 0;
     double force_max = 0; // largest force after any Newton minimisation [system units]
 };
 // A member travels between MPI ranks as JSON (core/ensemble.hpp).
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, modulus_linear, negative_modes,
-                                   fire_iterations, force_max)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ModulusMember, pressure, phi, modulus, modulus_linear, normal_stress_min,
+                                   negative_modes, fire_iterations, force_max)
+
+// The smallest normal stress min_a Sigma_aa of a periodic packing at x over its pressure Tr(Sigma)/D (eq.
+// 9.26 in 2D, its analogue in 3D): about 1 for a packing jammed along every axis. The jamming protocols stop
+// on the pressure alone, so a small packing can reach P_t with its contacts carrying the whole pressure
+// along fewer axes (a column along z): then an unloaded axis has Sigma_aa ~ 0, and where no contact crosses
+// the box boundary along y, U does not depend on the Lees-Edwards strain and G = 0.
+double smallest_normal_stress(const DpmSystem& system, const Eigen::VectorXd& x);
+double smallest_normal_stress(const DpmSystem3d& system, const Eigen::VectorXd& x);
 
 // Called after each minimisation of the shear at each state: the state's index, then as ShearedSystemObserver.
 template <class System>
@@ -70,6 +79,7 @@ ModulusMember moduli_at_states(System system, const States& states, double press
         m.modulus.push_back(g.modulus / pressure_unit);
         const LinearShearModulus linear = linear_shear_modulus(system, g.equilibrium);
         m.modulus_linear.push_back(linear.modulus / pressure_unit);
+        m.normal_stress_min.push_back(smallest_normal_stress(system, g.equilibrium));
         m.negative_modes.push_back(linear.negative_modes);
         m.force_max = std::max(m.force_max, g.force_max);
     }
