@@ -27,59 +27,29 @@ std::array<int, 3> corner_points(int first, int n, int i)
     return {vertex(first, n, i - 1), vertex(first, n, i), vertex(first, n, i + 1)};
 }
 
-// Eq. (9.1) with its gradient through the analytic local gradients (decision dpm-2d-analytic-gradient): the
-// same terms as the AutoDiff path below; the edge length is computed once per edge for both k_l and gamma,
-// d U/d l = k_l (l - l0) + gamma.
-double shape_energy_with_gradient(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
-                                  Eigen::VectorXd& gradient, unsigned terms)
-{
-    const auto edge = [first, n](int i) { return edge_points(first, n, i); };
-    double energy = 0;
-    if ((terms & area_term) && shape.ka != 0)
-        energy += penalty_of_sum_with_gradient<2, 2>(shape.ka, shape.a0, shoelace_term,
-                                                     shoelace_term_gradient, n, edge, x, gradient);
-    const double kl = (terms & edge_term) ? shape.kl : 0;
-    const double gamma = (terms & line_tension_term) ? shape.gamma : 0;
-    if (kl != 0 || gamma != 0)
-        for (int i = 0; i < n; ++i) {
-            const auto points = edge(i);
-            energy += add_penalty_and_tension<2, 2>(edge_length_gradient(gather<2, 2>(x, points)), points, kl,
-                                                    shape.l0, gamma, gradient);
-        }
-    if ((terms & bending_term) && shape.kb != 0)
-        for (int i = 0; i < n; ++i) {
-            const auto points = corner_points(first, n, i);
-            energy += add_penalty_and_tension<2, 3>(turning_angle_gradient(gather<2, 3>(x, points)), points,
-                                                    shape.kb, shape.theta0, 0.0, gradient);
-        }
-    return energy;
-}
-
 } // namespace
 
 double shape_energy(const ShapeParameters& shape, const Eigen::VectorXd& x, int first, int n,
                     Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {
-    if (gradient && !hessian) return shape_energy_with_gradient(shape, x, first, n, *gradient, terms);
-    double energy = 0;
-    if ((terms & area_term) && shape.ka != 0)
-        energy += penalty_of_sum<2, 2>(
-            shape.ka, shape.a0, shoelace_term, n, [first, n](int i) { return edge_points(first, n, i); },
-            first, n, x, gradient, hessian);
-    const LocalPenalty edge{edge_length, shape.kl, shape.l0};
-    const LocalTension tension{edge_length, shape.gamma};
-    const LocalPenalty bending{turning_angle, shape.kb, shape.theta0};
-    for (int i = 0; i < n; ++i) {
-        const std::array<int, 2> points = edge_points(first, n, i - 1);
-        if ((terms & edge_term) && shape.kl != 0)
-            energy += add_local_term<2, 2>(edge, points, gather<2, 2>(x, points), gradient, hessian);
-        if ((terms & line_tension_term) && shape.gamma != 0)
-            energy += add_local_term<2, 2>(tension, points, gather<2, 2>(x, points), gradient, hessian);
-        const std::array<int, 3> corner = corner_points(first, n, i);
+    const auto edge = [first, n](int i) { return edge_points(first, n, i); };
+    return with_dense_block(hessian, 2 * first, 2 * n, [&](HessianSink block) {
+        double energy = 0;
+        if ((terms & area_term) && shape.ka != 0)
+            energy += penalty_of_sum<2, 2>(shape.ka, shape.a0, shoelace_term, shoelace_term_slope, n, edge,
+                                           first, n, x, gradient, block);
+        const double kl = (terms & edge_term) ? shape.kl : 0;
+        const double gamma = (terms & line_tension_term) ? shape.gamma : 0;
+        if (kl != 0 || gamma != 0)
+            for (int i = 0; i < n; ++i)
+                energy += measure_term<2, 2>(edge_length, edge_length_slope, edge(i), x, kl, shape.l0, gamma,
+                                             gradient, block);
         if ((terms & bending_term) && shape.kb != 0)
-            energy += add_local_term<2, 3>(bending, corner, gather<2, 3>(x, corner), gradient, hessian);
-    }
-    return energy;
+            for (int i = 0; i < n; ++i)
+                energy += measure_term<2, 3>(turning_angle, turning_angle_slope, corner_points(first, n, i),
+                                             x, shape.kb, shape.theta0, 0.0, gradient, block);
+        return energy;
+    });
 }
 
 double particle_area(const Eigen::VectorXd& x, int first, int n)

@@ -11,12 +11,12 @@
 // length (the gradient of l_i is singular at l_i = 0) and turning angles away from +-pi, where theta_i
 // jumps by 2 pi (an edge folded back onto its neighbour). A clockwise polygon has a < 0.
 //
-// Each term is written once as a local function of the coordinates it depends on, templated on the
-// scalar; the exact Hessian follows from local_derivatives.hpp, and so do the forces when the Hessian is
-// asked for too; forces alone (FIRE) use the analytic gradients of the local measures below. The area term
-// is a penalty of a sum of local measures (shoelace terms); its derivatives follow by the chain rule from
-// theirs. 3D shells (eq. 9.2, shape_energy3d.hpp) reuse harmonic_penalty, LocalGradient, the penalty and
-// tension terms, add_penalty_and_tension and the penalty of a sum with a face volume.
+// Each term is written once as a local measure of the coordinates it depends on, with its analytic
+// gradient (its "slope"), both templated on the scalar: the forces are the slopes in double, the exact
+// Hessian is the slopes' forward-mode Jacobian (local_derivatives.hpp). The area term is a penalty of a sum
+// of local measures (shoelace terms); its derivatives follow by the chain rule from theirs. 3D shells
+// (eq. 9.2, shape_energy3d.hpp) reuse harmonic_penalty, measure_term and the penalty of a sum with a face
+// volume.
 #pragma once
 
 #include "dpm/laws/local_derivatives.hpp"
@@ -60,17 +60,11 @@ inline constexpr auto shoelace_term = []<class Scalar>(const Eigen::Matrix<Scala
     return Scalar(0.5) * (x(0) * x(3) - x(2) * x(1));
 };
 
-// Value and analytic first derivatives of a local measure of N coordinates.
-template <int N>
-struct LocalGradient
-{
-    double value = 0;
-    Eigen::Matrix<double, N, 1> gradient;
-};
-
-// Analytic first derivatives of the three measures above, for the gradient-only path (FIRE): the AutoDiff
-// gradient of the same measures costs several times more (decision dpm-2d-analytic-gradient); the Hessian
-// keeps AutoDiff. Verified against the AutoDiff gradients to round-off
+// Analytic first derivatives ("slopes") of the three measures above, generic in the scalar as the measures
+// are. In double they are the gradient-only path (FIRE): the AutoDiff gradient of the same measures costs
+// several times more (decision dpm-2d-analytic-gradient). In first-order AutoDiff their Jacobian is the
+// measures' Hessian (local_hessian_from_slope), which costs a fraction of nested AutoDiff of the measures.
+// Verified against the AutoDiff gradients and Hessians of the measures to round-off
 // (verification/dpm/laws/shape_energy.cpp).
 //   grad edge_length: d l/d r1 = (r1 - r0)/l = -d l/d r0; undefined at l = 0;
 //   grad shoelace_term = (y1, -x1, -y0, x0)/2;
@@ -79,126 +73,106 @@ struct LocalGradient
 //     edge o = r2 - r1: d theta/d r0 = (-i_y, i_x)/|i|^2, d theta/d r2 = (-o_y, o_x)/|o|^2,
 //     d theta/d r1 = -(d theta/d r0 + d theta/d r2) (translation invariance); undefined where an edge
 //     has length 0.
-// Inline: they run at every vertex of every FIRE force evaluation, and a call returning the struct through
-// memory costs more than the arithmetic.
-inline LocalGradient<4> edge_length_gradient(const Eigen::Matrix<double, 4, 1>& x)
-{
-    const Eigen::Vector2d r = x.segment<2>(2) - x.segment<2>(0);
-    LocalGradient<4> d;
-    d.value = edge_length(x);
-    const Eigen::Vector2d unit = r / d.value;
-    d.gradient << -unit, unit;
-    return d;
-}
+// Inline lambdas: they run at every vertex of every FIRE force evaluation.
+inline constexpr auto edge_length_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 4, 1>& x) -> Eigen::Matrix<Scalar, 4, 1> {
+    using std::sqrt;
+    const Eigen::Matrix<Scalar, 2, 1> r = x.template segment<2>(2) - x.template segment<2>(0);
+    const Scalar length = sqrt(r.squaredNorm());
+    const Eigen::Matrix<Scalar, 2, 1> unit = r / length;
+    Eigen::Matrix<Scalar, 4, 1> g;
+    g << -unit, unit;
+    return g;
+};
 
-inline LocalGradient<4> shoelace_term_gradient(const Eigen::Matrix<double, 4, 1>& x)
-{
-    LocalGradient<4> d;
-    d.value = shoelace_term(x);
-    d.gradient << 0.5 * x(3), -0.5 * x(2), -0.5 * x(1), 0.5 * x(0);
-    return d;
-}
+inline constexpr auto shoelace_term_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 4, 1>& x) -> Eigen::Matrix<Scalar, 4, 1> {
+    Eigen::Matrix<Scalar, 4, 1> g;
+    g << Scalar(0.5) * x(3), Scalar(-0.5) * x(2), Scalar(-0.5) * x(1), Scalar(0.5) * x(0);
+    return g;
+};
 
-inline LocalGradient<6> turning_angle_gradient(const Eigen::Matrix<double, 6, 1>& x)
-{
-    const Eigen::Vector2d incoming = x.segment<2>(2) - x.segment<2>(0);
-    const Eigen::Vector2d outgoing = x.segment<2>(4) - x.segment<2>(2);
+inline constexpr auto turning_angle_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 6, 1>& x) -> Eigen::Matrix<Scalar, 6, 1> {
+    using Vector = Eigen::Matrix<Scalar, 2, 1>;
+    const Vector incoming = x.template segment<2>(2) - x.template segment<2>(0);
+    const Vector outgoing = x.template segment<2>(4) - x.template segment<2>(2);
     // d phi/d e = (-e_y, e_x)/|e|^2 for the polar angle phi of an edge e.
-    const Eigen::Vector2d g0 = Eigen::Vector2d(-incoming.y(), incoming.x()) / incoming.squaredNorm();
-    const Eigen::Vector2d g2 = Eigen::Vector2d(-outgoing.y(), outgoing.x()) / outgoing.squaredNorm();
-    LocalGradient<6> d;
-    d.value = turning_angle(x);
-    d.gradient << g0, -(g0 + g2), g2;
-    return d;
-}
-
-// The two forms a local measure q enters eqs. (9.1) and (9.2) in, as local terms (local_derivatives.hpp):
-// the penalty k/2 (q - q0)^2 (edge length and turning angle in 2D; face area and dihedral angle in 3D)
-// and the tension gamma q (line tension of an edge, surface tension of a face).
-template <class Measure>
-struct LocalPenalty
-{
-    Measure measure;
-    double k, rest;
-    template <class Vector>
-    typename Vector::Scalar operator()(const Vector& x) const
-    {
-        return harmonic_penalty(k, measure(x), rest);
-    }
+    const Scalar in2 = incoming.squaredNorm(), out2 = outgoing.squaredNorm();
+    const Vector g0 = Vector(-incoming.y(), incoming.x()) / in2;
+    const Vector g2 = Vector(-outgoing.y(), outgoing.x()) / out2;
+    Eigen::Matrix<Scalar, 6, 1> g;
+    g << g0, -(g0 + g2), g2;
+    return g;
 };
 
-template <class Measure>
-struct LocalTension
+// One local measure q of eq. (9.1) or (9.2) over `points` that enters the energy as
+// U = k/2 (q - q0)^2 + gamma q (an edge's length for k_l and gamma at once, a corner's turning angle; a
+// face's area, a hinge's angle), with dU = (k (q - q0) + gamma) dq and d^2U = k dq dq^T + (k (q - q0) +
+// gamma) d^2q: its value alone, with the gradient from the analytic slope (FIRE), or with the Hessian too,
+// the slope's forward-mode Jacobian. Adds the derivatives where `gradient` and `hessian` ask; a term that
+// is switched off has k = 0 or gamma = 0.
+template <int Dim, int K, class Measure, class Slope>
+double measure_term(const Measure& measure, const Slope& slope, const std::array<int, K>& points,
+                    const Eigen::VectorXd& x, double k, double rest, double gamma, Eigen::VectorXd* gradient,
+                    HessianSink hessian)
 {
-    Measure measure;
-    double gamma;
-    template <class Vector>
-    typename Vector::Scalar operator()(const Vector& x) const
-    {
-        using Scalar = typename Vector::Scalar;
-        return Scalar(gamma) * measure(x);
+    const Eigen::Matrix<double, K * Dim, 1> local = gather<Dim, K>(x, points);
+    if (hessian) {
+        const LocalDerivatives<K* Dim> q = local_hessian_from_slope<K * Dim>(measure, slope, local);
+        const double weight = k * (q.value - rest) + gamma;
+        LocalDerivatives<K * Dim> term;
+        term.value = harmonic_penalty(k, q.value, rest) + gamma * q.value;
+        term.gradient = weight * q.gradient;
+        term.hessian = k * q.gradient * q.gradient.transpose() + weight * q.hessian;
+        add_local_derivatives<Dim, K>(term, points, local, gradient, hessian);
+        return term.value;
     }
-};
-
-// Penalty and tension of one local measure q at once, from its analytic gradient d (the gradient-only
-// path): adds (k (q - q0) + gamma) grad q into `gradient` at `points` and returns k/2 (q - q0)^2 + gamma q.
-// A term that is switched off has k = 0 or gamma = 0.
-template <int Dim, int K>
-double add_penalty_and_tension(const LocalGradient<K * Dim>& d, const std::array<int, K>& points, double k,
-                               double rest, double gamma, Eigen::VectorXd& gradient)
-{
-    scatter_gradient<Dim, K>(d.gradient, points, k * (d.value - rest) + gamma, gradient);
-    return harmonic_penalty(k, d.value, rest) + gamma * d.value;
+    const double q = measure(local);
+    if (gradient) scatter_gradient<Dim, K>(slope(local), points, k * (q - rest) + gamma, *gradient);
+    return harmonic_penalty(k, q, rest) + gamma * q;
 }
 
 // k/2 (Q - Q0)^2 of a sum Q = sum_j q_j of local measures over the `elements` point sets points_of(j),
 // j = 0 ... elements - 1 (the area of eq. 9.1 over the shoelace terms, the volume of eq. 9.2 over the face
 // volumes), all of them among the `count` points first ... first + count - 1 of x (one particle). Adds the
-// gradient k (Q - Q0) grad Q and the Hessian k (grad Q grad Q^T + (Q - Q0) hess Q) when they are given,
-// with grad Q and hess Q assembled from the AutoDiff derivatives of the local measures in the particle's
-// own coordinates.
-template <int Dim, int K, class Measure, class PointsOf>
-double penalty_of_sum(double k, double rest, const Measure& measure, int elements, const PointsOf& points_of,
-                      int first, int count, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                      HessianSink hessian)
+// gradient k (Q - Q0) grad Q and the Hessian k (grad Q grad Q^T + (Q - Q0) hess Q) when they are given.
+// The gradient alone takes two passes, the sum Q and then k (Q - Q0) grad q_j scattered element by element
+// (no buffer); with the Hessian, grad Q and hess Q are assembled in the particle's own coordinates from the
+// local measures' slopes and their Jacobians.
+template <int Dim, int K, class Measure, class Slope, class PointsOf>
+double penalty_of_sum(double k, double rest, const Measure& measure, const Slope& slope, int elements,
+                      const PointsOf& points_of, int first, int count, const Eigen::VectorXd& x,
+                      Eigen::VectorXd* gradient, HessianSink hessian)
 {
-    const int dofs = Dim * count;
-    Eigen::VectorXd grad_sum = Eigen::VectorXd::Zero(gradient || hessian ? dofs : 0);
-    Eigen::MatrixXd hess_sum = Eigen::MatrixXd::Zero(hessian ? dofs : 0, hessian ? dofs : 0);
     double sum = 0;
+    if (!hessian) {
+        for (int j = 0; j < elements; ++j)
+            sum += measure(gather<Dim, K>(x, points_of(j)));
+        if (gradient)
+            for (int j = 0; j < elements; ++j) {
+                const std::array<int, K> points = points_of(j);
+                scatter_gradient<Dim, K>(slope(gather<Dim, K>(x, points)), points, k * (sum - rest),
+                                         *gradient);
+            }
+        return harmonic_penalty(k, sum, rest);
+    }
+    const int dofs = Dim * count;
+    Eigen::VectorXd grad_sum = Eigen::VectorXd::Zero(dofs);
+    Eigen::MatrixXd hess_sum = Eigen::MatrixXd::Zero(dofs, dofs);
     for (int j = 0; j < elements; ++j) {
         const std::array<int, K> points = points_of(j);
         std::array<int, K> own_points; // indices within the particle
         for (int a = 0; a < K; ++a)
             own_points[a] = points[a] - first;
-        sum +=
-            add_local_term<Dim, K>(measure, own_points, gather<Dim, K>(x, points),
-                                   gradient || hessian ? &grad_sum : nullptr, hessian ? &hess_sum : nullptr);
+        const LocalDerivatives<K* Dim> q =
+            local_hessian_from_slope<K * Dim>(measure, slope, gather<Dim, K>(x, points));
+        sum += q.value;
+        scatter<Dim, K>(q, own_points, 1.0, &grad_sum, &hess_sum);
     }
     const double deviation = sum - rest;
     if (gradient) gradient->segment(Dim * first, dofs) += k * deviation * grad_sum;
-    if (hessian)
-        hessian.add(Dim * first, Dim * first, k * (grad_sum * grad_sum.transpose() + deviation * hess_sum));
-    return harmonic_penalty(k, sum, rest);
-}
-
-// The same penalty with its gradient from the analytic local gradients (the gradient-only path), in two
-// passes, the sum Q and then k (Q - Q0) grad q_j scattered element by element: no buffer.
-template <int Dim, int K, class Measure, class MeasureGradient, class PointsOf>
-double penalty_of_sum_with_gradient(double k, double rest, const Measure& measure,
-                                    const MeasureGradient& measure_gradient, int elements,
-                                    const PointsOf& points_of, const Eigen::VectorXd& x,
-                                    Eigen::VectorXd& gradient)
-{
-    double sum = 0;
-    for (int j = 0; j < elements; ++j)
-        sum += measure(gather<Dim, K>(x, points_of(j)));
-    const double slope = k * (sum - rest);
-    for (int j = 0; j < elements; ++j) {
-        const std::array<int, K> points = points_of(j);
-        scatter_gradient<Dim, K>(measure_gradient(gather<Dim, K>(x, points)).gradient, points, slope,
-                                 gradient);
-    }
+    hessian.add(Dim * first, Dim * first, k * (grad_sum * grad_sum.transpose() + deviation * hess_sum));
     return harmonic_penalty(k, sum, rest);
 }
 

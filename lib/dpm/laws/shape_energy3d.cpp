@@ -14,63 +14,31 @@ std::array<int, 4> edge_points(const MeshEdge& e, int first)
     return {first + e.a, first + e.b, first + e.c, first + e.d};
 }
 
-// Eq. (9.2) with its gradient through the analytic local gradients (decision dpm-3d-analytic-gradient):
-// the same terms as the AutoDiff path below; the face area is computed once per face for both k_a and
-// gamma, d U/d x = (k_a (a_f - a_f0) + gamma) d a_f/d x.
-double shape_energy_with_gradient3d(const ShapeParameters3d& shape, const TriangleMesh& mesh,
-                                    const Eigen::VectorXd& x, int first, Eigen::VectorXd& gradient,
-                                    unsigned terms)
-{
-    double energy = 0;
-    if ((terms & volume_term3d) && shape.kv != 0)
-        energy += penalty_of_sum_with_gradient<3, 3>(
-            shape.kv, shape.v0, face_volume, face_volume_gradient, mesh.face_count(),
-            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, x, gradient);
-    const double ka = (terms & face_area_term3d) ? shape.ka : 0;
-    const double gamma = (terms & surface_tension_term3d) ? shape.gamma : 0;
-    if (ka != 0 || gamma != 0)
-        for (int f = 0; f < mesh.face_count(); ++f) {
-            const auto points = face_points(mesh.faces[f], first);
-            energy += add_penalty_and_tension<3, 3>(triangle_area_gradient(gather<3, 3>(x, points)), points,
-                                                    ka, ka != 0 ? shape.a0[f] : 0.0, gamma, gradient);
-        }
-    if ((terms & bending_term3d) && shape.kb != 0)
-        for (int e = 0; e < mesh.edge_count(); ++e) {
-            const auto points = edge_points(mesh.edges[e], first);
-            energy += add_penalty_and_tension<3, 4>(dihedral_angle_gradient(gather<3, 4>(x, points)), points,
-                                                    shape.kb, shape.theta0[e], 0.0, gradient);
-        }
-    return energy;
-}
-
 } // namespace
 
 double shape_energy3d(const ShapeParameters3d& shape, const TriangleMesh& mesh, const Eigen::VectorXd& x,
                       int first, Eigen::VectorXd* gradient, HessianSink hessian, unsigned terms)
 {
-    if (gradient && !hessian) return shape_energy_with_gradient3d(shape, mesh, x, first, *gradient, terms);
-    double energy = 0;
-    if ((terms & volume_term3d) && shape.kv != 0)
-        energy += penalty_of_sum<3, 3>(
-            shape.kv, shape.v0, face_volume, mesh.face_count(),
-            [&mesh, first](int f) { return face_points(mesh.faces[f], first); }, first, mesh.vertex_count(),
-            x, gradient, hessian);
-    const LocalTension tension{triangle_area, shape.gamma};
-    for (int f = 0; f < mesh.face_count(); ++f) {
-        const auto points = face_points(mesh.faces[f], first);
-        if ((terms & face_area_term3d) && shape.ka != 0)
-            energy += add_local_term<3, 3>(LocalPenalty{triangle_area, shape.ka, shape.a0[f]}, points,
-                                           gather<3, 3>(x, points), gradient, hessian);
-        if ((terms & surface_tension_term3d) && shape.gamma != 0)
-            energy += add_local_term<3, 3>(tension, points, gather<3, 3>(x, points), gradient, hessian);
-    }
-    if ((terms & bending_term3d) && shape.kb != 0)
-        for (int e = 0; e < mesh.edge_count(); ++e) {
-            const auto points = edge_points(mesh.edges[e], first);
-            energy += add_local_term<3, 4>(LocalPenalty{dihedral_angle, shape.kb, shape.theta0[e]}, points,
-                                           gather<3, 4>(x, points), gradient, hessian);
-        }
-    return energy;
+    const auto face_of = [&mesh, first](int f) { return face_points(mesh.faces[f], first); };
+    return with_dense_block(hessian, 3 * first, 3 * mesh.vertex_count(), [&](HessianSink block) {
+        double energy = 0;
+        if ((terms & volume_term3d) && shape.kv != 0)
+            energy +=
+                penalty_of_sum<3, 3>(shape.kv, shape.v0, face_volume, face_volume_slope, mesh.face_count(),
+                                     face_of, first, mesh.vertex_count(), x, gradient, block);
+        const double ka = (terms & face_area_term3d) ? shape.ka : 0;
+        const double gamma = (terms & surface_tension_term3d) ? shape.gamma : 0;
+        if (ka != 0 || gamma != 0)
+            for (int f = 0; f < mesh.face_count(); ++f)
+                energy += measure_term<3, 3>(triangle_area, triangle_area_slope, face_of(f), x, ka,
+                                             ka != 0 ? shape.a0[f] : 0.0, gamma, gradient, block);
+        if ((terms & bending_term3d) && shape.kb != 0)
+            for (int e = 0; e < mesh.edge_count(); ++e)
+                energy += measure_term<3, 4>(dihedral_angle, dihedral_angle_slope,
+                                             edge_points(mesh.edges[e], first), x, shape.kb, shape.theta0[e],
+                                             0.0, gradient, block);
+        return energy;
+    });
 }
 
 double mesh_volume(const TriangleMesh& mesh, const Eigen::VectorXd& x, int first)

@@ -65,9 +65,10 @@ inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scal
     return Scalar(atan2(sine, cosine));
 };
 
-// Analytic first derivatives of the three local measures above, for the gradient-only path (FIRE): the
-// AutoDiff gradient of the same measures costs several times more (decision dpm-3d-analytic-gradient);
-// the Hessian keeps AutoDiff. Verified against the AutoDiff gradients to round-off and against finite
+// Analytic first derivatives ("slopes") of the three local measures above, generic in the scalar as in 2D
+// (shape_energy.hpp): in double the gradient-only path (FIRE; the AutoDiff gradient of the same measures
+// costs several times more, decision dpm-3d-analytic-gradient), in first-order AutoDiff the measures'
+// Hessian. Verified against the AutoDiff gradients and Hessians to round-off and against finite
 // differences (verification/dpm/laws/shape_energy3d.cpp).
 //   grad face_volume  = (r1 x r2, r2 x r0, r0 x r1)/6;
 //   grad triangle_area: with the unit normal m = n/|n|,
@@ -78,40 +79,50 @@ inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scal
 //     normal flattens a convex edge); the edge points carry the rest according to where c and d project on
 //     the edge, with t_c = (c - a) . e/|e|^2: d theta/d b = -(t_c d theta/d c + t_d d theta/d d),
 //     d theta/d a = -(d theta/d b + d theta/d c + d theta/d d); undefined for a degenerate face.
-// Inline, as in 2D: they run at every face and edge of every FIRE force evaluation.
-inline LocalGradient<9> face_volume_gradient(const Eigen::Matrix<double, 9, 1>& x)
-{
-    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
-    LocalGradient<9> d;
-    d.value = face_volume(x);
-    d.gradient << r1.cross(r2) / 6.0, r2.cross(r0) / 6.0, r0.cross(r1) / 6.0;
-    return d;
-}
+// Their forward-mode Jacobian (local_hessian_from_slope) costs a fifteenth of nested AutoDiff of the angle
+// itself, which took 80 % of a 3D packing's Hessian assembly.
+inline constexpr auto face_volume_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Eigen::Matrix<Scalar, 9, 1> {
+    using Vector = Eigen::Matrix<Scalar, 3, 1>;
+    const Vector r0 = x.template segment<3>(0), r1 = x.template segment<3>(3), r2 = x.template segment<3>(6);
+    const Scalar six(6.0);
+    Eigen::Matrix<Scalar, 9, 1> g;
+    g << r1.cross(r2) / six, r2.cross(r0) / six, r0.cross(r1) / six;
+    return g;
+};
 
-inline LocalGradient<9> triangle_area_gradient(const Eigen::Matrix<double, 9, 1>& x)
-{
-    const Eigen::Vector3d r0 = x.segment<3>(0), r1 = x.segment<3>(3), r2 = x.segment<3>(6);
-    const Eigen::Vector3d m = (r1 - r0).cross(r2 - r0).normalized();
-    const Eigen::Vector3d g1 = 0.5 * (r2 - r0).cross(m), g2 = 0.5 * m.cross(r1 - r0);
-    LocalGradient<9> d;
-    d.value = triangle_area(x);
-    d.gradient << -(g1 + g2), g1, g2;
-    return d;
-}
+inline constexpr auto triangle_area_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Eigen::Matrix<Scalar, 9, 1> {
+    using std::sqrt;
+    using Vector = Eigen::Matrix<Scalar, 3, 1>;
+    const Vector r0 = x.template segment<3>(0), r1 = x.template segment<3>(3), r2 = x.template segment<3>(6);
+    const Vector n = (r1 - r0).cross(r2 - r0);
+    const Scalar length = sqrt(n.squaredNorm());
+    const Vector m = n / length;
+    const Vector g1 = Scalar(0.5) * (r2 - r0).cross(m), g2 = Scalar(0.5) * m.cross(r1 - r0);
+    Eigen::Matrix<Scalar, 9, 1> g;
+    g << -(g1 + g2), g1, g2;
+    return g;
+};
 
-inline LocalGradient<12> dihedral_angle_gradient(const Eigen::Matrix<double, 12, 1>& x)
-{
-    const Eigen::Vector3d a = x.segment<3>(0), b = x.segment<3>(3), c = x.segment<3>(6), dd = x.segment<3>(9);
-    const Eigen::Vector3d e = b - a;
-    const Eigen::Vector3d n1 = e.cross(c - a), n2 = (a - b).cross(dd - b);
-    const double e2 = e.squaredNorm(), length = std::sqrt(e2);
-    const Eigen::Vector3d gc = -length / n1.squaredNorm() * n1, gd = -length / n2.squaredNorm() * n2;
-    const Eigen::Vector3d gb = -((c - a).dot(e) / e2 * gc + (dd - a).dot(e) / e2 * gd);
-    LocalGradient<12> d;
-    d.value = dihedral_angle(x);
-    d.gradient << -(gb + gc + gd), gb, gc, gd;
-    return d;
-}
+inline constexpr auto dihedral_angle_slope =
+    []<class Scalar>(const Eigen::Matrix<Scalar, 12, 1>& x) -> Eigen::Matrix<Scalar, 12, 1> {
+    using std::sqrt;
+    using Vector = Eigen::Matrix<Scalar, 3, 1>;
+    const Vector a = x.template segment<3>(0), b = x.template segment<3>(3), c = x.template segment<3>(6),
+                 d = x.template segment<3>(9);
+    const Vector e = b - a;
+    const Vector n1 = e.cross(c - a), n2 = (a - b).cross(d - b);
+    const Scalar e2 = e.squaredNorm();
+    const Scalar length = sqrt(e2);
+    const Scalar wc = -length / n1.squaredNorm(), wd = -length / n2.squaredNorm();
+    const Vector gc = wc * n1, gd = wd * n2;
+    const Scalar tc = (c - a).dot(e) / e2, td = (d - a).dot(e) / e2;
+    const Vector gb = -(tc * gc + td * gd);
+    Eigen::Matrix<Scalar, 12, 1> g;
+    g << -(gb + gc + gd), gb, gc, gd;
+    return g;
+};
 
 // Parameters of eq. (9.2) for one particle: per-face rest areas and per-edge rest angles (in the order of
 // the mesh's faces and edges), since on a geodesic mesh they are not uniform (section 9.3.1).

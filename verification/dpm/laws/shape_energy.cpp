@@ -1,14 +1,17 @@
 // DPM eq. (9.1): every term of the 2D shape energy. Forces are minus the gradient of the energy and the
 // Hessian is the derivative of the gradient (central finite differences on random configurations);
-// the analytic gradients of the gradient-only (FIRE) path equal the AutoDiff ones to round-off; the shape
+// the analytic gradients of the gradient-only (FIRE) path and their Jacobians equal the AutoDiff gradients
+// and Hessians to round-off; the sparse Hessian equals the dense one to the bit; the shape
 // parameter of section 9.3.1 and its minimum N tan(pi/N)/pi.
 #include "dpm/laws/shape_energy.hpp"
 #include "core/rng.hpp"
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <numbers>
+#include <vector>
 
 using namespace softgrain;
 using namespace softgrain::dpm;
@@ -151,33 +154,44 @@ TEST_CASE("Table 9.1 rest shapes: an elastic shell at A0 = A_min is force-free a
     CHECK_CLOSE(n * s.l0, particle_perimeter(x, 0, n), (Tolerance{1e3 * round_off, 0}));
 }
 
-TEST_CASE("analytic gradients of edge length, shoelace term and turning angle = AutoDiff ones to round-off "
-          "[DPM eq. (9.1)]")
+TEST_CASE("analytic slopes of edge length, shoelace term and turning angle and their Jacobians = AutoDiff "
+          "gradients and Hessians to round-off [DPM eq. (9.1)]")
 {
-    // The same derivative in two roundings: the analytic formulas (shape_energy.hpp) and forward AutoDiff of
-    // the measures themselves. Each component is a quotient or product of two or three O(1) differences of
-    // coordinates, so they agree to a few eps of the measure's gradient scale (its largest component); 16
-    // eps leaves room for the different operation order of AutoDiff's atan2 derivative
-    // (d cross dot - cross d dot)/(cross^2 + dot^2), while a wrong sign or term is an O(1) relative error.
-    // The values are the same double code in both. Random points of [-1, 1]^2: turning angles over
-    // (-pi, pi), both signs and close to +-pi.
+    // The same derivatives in two roundings: the analytic slopes (shape_energy.hpp) in double and, through
+    // their forward-mode Jacobian, the Hessian (local_hessian_from_slope), against forward AutoDiff of the
+    // measures themselves, once and nested. Each gradient component is a quotient or product of two or three
+    // O(1) differences of coordinates, so they agree to a few eps of the measure's gradient scale (its
+    // largest component); 16 eps leaves room for the different operation order of AutoDiff's atan2
+    // derivative (d cross dot - cross d dot)/(cross^2 + dot^2), while a wrong sign or term is an O(1)
+    // relative error. A Hessian entry is one more such quotient (derivatives of 1/|e|^2 and of e/|e|), so
+    // 64 eps of the Hessian's scale. The values are the same double code in both. Random points of
+    // [-1, 1]^2: turning angles over (-pi, pi), both signs and close to +-pi.
     Rng rng(91201);
     const auto point = [&rng] { return Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1)); };
-    const auto check = [](const auto& analytic, const auto& autodiff) {
+    const auto check = [](const auto& measure, const auto& slope, const auto& x) {
+        constexpr int n = std::decay_t<decltype(x)>::RowsAtCompileTime;
+        const auto autodiff = local_hessian<n>(measure, x);
+        const auto analytic = local_hessian_from_slope<n>(measure, slope, x);
         const double scale = autodiff.gradient.cwiseAbs().maxCoeff();
         CHECK_CLOSE(analytic.value, autodiff.value, (Tolerance{0, 4 * round_off * std::abs(autodiff.value)}));
-        CHECK_CLOSE((analytic.gradient - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
+        CHECK_CLOSE((slope(x) - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
                     (Tolerance{0, 16 * round_off * scale}));
+        // The value part of the AutoDiff sweep: the same formulas, grouped as Eigen's AutoDiff takes them.
+        CHECK_CLOSE((analytic.gradient - slope(x)).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 4 * round_off * scale}));
+        CHECK_CLOSE((analytic.hessian - autodiff.hessian).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 64 * round_off * autodiff.hessian.cwiseAbs().maxCoeff()}));
+        CHECK(analytic.hessian == analytic.hessian.transpose());
     };
     double smallest_angle = 0, largest_angle = 0;
     for (int trial = 0; trial < 500; ++trial) {
         Eigen::Matrix<double, 4, 1> edge;
         edge << point(), point();
-        check(edge_length_gradient(edge), local_gradient<4>(edge_length, edge));
-        check(shoelace_term_gradient(edge), local_gradient<4>(shoelace_term, edge));
+        check(edge_length, edge_length_slope, edge);
+        check(shoelace_term, shoelace_term_slope, edge);
         Eigen::Matrix<double, 6, 1> corner;
         corner << point(), point(), point();
-        check(turning_angle_gradient(corner), local_gradient<6>(turning_angle, corner));
+        check(turning_angle, turning_angle_slope, corner);
         smallest_angle = std::min(smallest_angle, turning_angle(corner));
         largest_angle = std::max(largest_angle, turning_angle(corner));
     }
@@ -185,17 +199,21 @@ TEST_CASE("analytic gradients of edge length, shoelace term and turning angle = 
     CHECK(largest_angle > 3.0);
 }
 
-TEST_CASE("the gradient-only path of eq. (9.1) (analytic, FIRE) = the AutoDiff gradient beside the Hessian, "
-          "each term, k_b = 0 and k_b > 0, random polygons [DPM eq. (9.1)]")
+TEST_CASE("the gradient-only path of eq. (9.1) (FIRE) = the gradient beside the Hessian, and the sparse "
+          "Hessian = the dense one, each term, k_b = 0 and k_b > 0, random polygons [DPM eq. (9.1)]")
 {
     // Random non-regular polygons (vertices displaced by up to 30 % of the edge: concave corners too) of
     // 3 ... 22 vertices, stored as the second particle of a flat array (so the particle's offset is
     // exercised), with random stiffnesses and rest values; floppy-like k_b = 0 and shell-like k_b > 0.
-    // The analytic path sums k (q - q0) grad q element by element, the AutoDiff path per term and, for the
-    // area, grad a first: round-off of the sums over the <= 3 local terms at a vertex and of the product
-    // k_a (a - a0) grad a, where a - a0 carries the rounding of the O(n)-term shoelace sum (n eps |a|);
-    // hence 100 eps of the gradient's scale (its largest component, at least 1 of these O(1) units).
-    // A wrong sign, factor or index is an O(1) relative error.
+    // Both paths take the same analytic slopes: the gradient-only path sums k (q - q0) grad q element by
+    // element and, for the area, the slopes of the shoelace terms in a second pass; the Hessian's path
+    // per term, through the value part of the AutoDiff sweep, and grad a first: round-off of the sums over
+    // the <= 3 local terms at a vertex and of the product k_a (a - a0) grad a, where a - a0 carries the
+    // rounding of the O(n)-term shoelace sum (n eps |a|); hence 100 eps of the gradient's scale (its
+    // largest component, at least 1 of these O(1) units). A wrong sign, factor or index is an O(1) relative
+    // error. Into a sparse sink the particle's Hessian goes as one dense block (with_dense_block): the
+    // same additions in the same order as into the dense matrix, so the same numbers to the bit, one
+    // triplet per entry.
     Rng rng(91202);
     const std::pair<unsigned, const char*> terms[] = {{area_term, "area"},
                                                       {edge_term, "edge length"},
@@ -215,14 +233,14 @@ TEST_CASE("the gradient-only path of eq. (9.1) (analytic, FIRE) = the AutoDiff g
                 CAPTURE(n);
                 CAPTURE(s.kb);
                 CAPTURE(name);
-                Eigen::VectorXd g_autodiff = Eigen::VectorXd::Zero(dofs),
+                Eigen::VectorXd g_with_hessian = Eigen::VectorXd::Zero(dofs),
                                 g_analytic = Eigen::VectorXd::Zero(dofs);
                 Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
-                const double energy = shape_energy(s, x, first, n, &g_autodiff, &h, term);
+                const double energy = shape_energy(s, x, first, n, &g_with_hessian, &h, term);
                 CHECK_CLOSE(shape_energy(s, x, first, n, &g_analytic, nullptr, term), energy,
                             (Tolerance{10 * round_off, 100 * round_off}));
-                const double scale = std::max(1.0, g_autodiff.cwiseAbs().maxCoeff());
-                CHECK_CLOSE((g_analytic - g_autodiff).cwiseAbs().maxCoeff(), 0.0,
+                const double scale = std::max(1.0, g_with_hessian.cwiseAbs().maxCoeff());
+                CHECK_CLOSE((g_analytic - g_with_hessian).cwiseAbs().maxCoeff(), 0.0,
                             (Tolerance{0, 100 * round_off * scale}));
                 // Nothing outside the particle.
                 CHECK(g_analytic.head(2 * first).cwiseAbs().maxCoeff() == 0.0);
@@ -233,8 +251,14 @@ TEST_CASE("the gradient-only path of eq. (9.1) (analytic, FIRE) = the AutoDiff g
                 Eigen::VectorXd g_alone = Eigen::VectorXd::Zero(2 * n);
                 Eigen::MatrixXd h_alone = Eigen::MatrixXd::Zero(2 * n, 2 * n);
                 shape_energy(s, polygon, 0, n, &g_alone, &h_alone, term);
-                CHECK((g_autodiff.tail(2 * n) - g_alone).cwiseAbs().maxCoeff() == 0.0);
+                CHECK((g_with_hessian.tail(2 * n) - g_alone).cwiseAbs().maxCoeff() == 0.0);
                 CHECK((h.bottomRightCorner(2 * n, 2 * n) - h_alone).cwiseAbs().maxCoeff() == 0.0);
+                std::vector<Eigen::Triplet<double>> triplets;
+                shape_energy(s, x, first, n, nullptr, &triplets, term);
+                CHECK(triplets.size() == static_cast<std::size_t>(4 * n * n));
+                Eigen::SparseMatrix<double> sparse(dofs, dofs);
+                sparse.setFromTriplets(triplets.begin(), triplets.end());
+                CHECK((Eigen::MatrixXd(sparse) - h).cwiseAbs().maxCoeff() == 0.0);
             }
         }
     }

@@ -9,6 +9,9 @@
 #include "support/derivatives.hpp"
 #include "support/tolerance.hpp"
 
+#include <Eigen/SparseCore>
+#include <vector>
+
 using namespace softgrain;
 using namespace softgrain::dpm;
 using softgrain::verification::check_against_central_differences;
@@ -57,7 +60,7 @@ void check_derivatives(const ShapeParameters3d& s, const TriangleMesh& mesh, con
     // penalty k_v/2 (v - v0)^2 may be small after the cancellation in v - v0.
     CHECK_CLOSE(shape_energy3d(s, mesh, x, 0, nullptr, nullptr, term), energy,
                 (Tolerance{10 * round_off, 100 * round_off}));
-    // The gradient alone comes from the analytic local gradients, the one beside the Hessian from AutoDiff:
+    // The gradient alone and the one beside the Hessian sum the same analytic slopes in two orders:
     // round-off of sums over the <= 6 faces or 12 hinges at a vertex (and, for the volume, of the product
     // k_v (v - v0) grad v), so 1000 eps of the largest component.
     Eigen::VectorXd g_analytic = Eigen::VectorXd::Zero(dofs);
@@ -73,6 +76,15 @@ void check_derivatives(const ShapeParameters3d& s, const TriangleMesh& mesh, con
     const double g_scale = std::max(1.0, g.cwiseAbs().maxCoeff());
     const double h_scale = std::max(1.0, h.cwiseAbs().maxCoeff());
     CHECK_CLOSE((h - h.transpose()).cwiseAbs().maxCoeff(), 0.0, (Tolerance{0, 100 * round_off * h_scale}));
+    // Into a sparse sink the particle's Hessian goes as one dense block (with_dense_block): the same
+    // additions in the same order as into the dense matrix, so the same numbers to the bit, one triplet
+    // per entry.
+    std::vector<Eigen::Triplet<double>> triplets;
+    shape_energy3d(s, mesh, x, 0, nullptr, &triplets, term);
+    CHECK(triplets.size() == static_cast<std::size_t>(dofs * dofs));
+    Eigen::SparseMatrix<double> sparse(dofs, dofs);
+    sparse.setFromTriplets(triplets.begin(), triplets.end());
+    CHECK((Eigen::MatrixXd(sparse) - h).cwiseAbs().maxCoeff() == 0.0);
     // Rigid-motion invariance: sum of forces and sum of torques r x F vanish (round-off of N terms).
     const Eigen::Matrix3Xd r = x.reshaped(3, n), f = g.reshaped(3, n);
     Eigen::Vector3d torque = Eigen::Vector3d::Zero();
@@ -147,38 +159,46 @@ TEST_CASE("the undeformed mesh is a zero-energy state of its own rest shape [DPM
     }
 }
 
-TEST_CASE("analytic gradients of face volume, triangle area and dihedral angle = AutoDiff ones to round-off "
-          "[DPM eq. (9.2)]")
+TEST_CASE("analytic slopes of face volume, triangle area and dihedral angle and their Jacobians = AutoDiff "
+          "gradients and Hessians to round-off [DPM eq. (9.2)]")
 {
-    // The same derivative in two roundings: the analytic formulas (shape_energy3d.hpp) and forward AutoDiff
-    // of the measures themselves. Each component is a short sum of products of O(1) coordinates, so they
-    // agree to a few eps times the measure's gradient scale (its largest component); 64 eps leaves room
-    // for the atan2 quotient of the dihedral angle, while a wrong sign or term is an O(1) relative error.
-    // The values are the same double code as the AutoDiff value part up to the order of operations that
-    // Eigen's AutoDiff products take: a few eps of the O(1) measure.
+    // The same derivatives in two roundings: the analytic slopes (shape_energy3d.hpp) in double and,
+    // through their forward-mode Jacobian, the Hessian (local_hessian_from_slope), against forward AutoDiff
+    // of the measures themselves, once and nested. Each gradient component is a short sum of products of
+    // O(1) coordinates, so they agree to a few eps times the measure's gradient scale (its largest
+    // component); 64 eps leaves room for the atan2 quotient of the dihedral angle, while a wrong sign or
+    // term is an O(1) relative error. A Hessian entry is one derivative more of such quotients: 256 eps of
+    // the Hessian's scale. The values are the same double code as the AutoDiff value part up to the order
+    // of operations that Eigen's AutoDiff products take: a few eps of the O(1) measure.
     // Random triangles and hinges with bending angles over (-pi, pi), convex and concave.
     Rng rng(90203);
     const auto point = [&rng] {
         return Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
     };
-    const auto check = [](const auto& analytic, const auto& autodiff) {
+    const auto check = [](const auto& measure, const auto& slope, const auto& x) {
+        constexpr int n = std::decay_t<decltype(x)>::RowsAtCompileTime;
+        const auto autodiff = local_hessian<n>(measure, x);
+        const auto analytic = local_hessian_from_slope<n>(measure, slope, x);
         const double scale = autodiff.gradient.cwiseAbs().maxCoeff();
         CHECK_CLOSE(analytic.value, autodiff.value, (Tolerance{0, 4 * round_off}));
-        CHECK_CLOSE((analytic.gradient - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
+        CHECK_CLOSE((slope(x) - autodiff.gradient).cwiseAbs().maxCoeff(), 0.0,
                     (Tolerance{0, 64 * round_off * scale}));
+        // The value part of the AutoDiff sweep: the same formulas, grouped as Eigen's AutoDiff takes them.
+        CHECK_CLOSE((analytic.gradient - slope(x)).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 4 * round_off * scale}));
+        CHECK_CLOSE((analytic.hessian - autodiff.hessian).cwiseAbs().maxCoeff(), 0.0,
+                    (Tolerance{0, 256 * round_off * autodiff.hessian.cwiseAbs().maxCoeff()}));
+        CHECK(analytic.hessian == analytic.hessian.transpose());
     };
-    const auto volume = [](const auto& y) { return face_volume(y); };
-    const auto area = [](const auto& y) { return triangle_area(y); };
-    const auto angle = [](const auto& y) { return dihedral_angle(y); };
     double smallest_angle = 0, largest_angle = 0;
     for (int trial = 0; trial < 200; ++trial) {
         Eigen::Matrix<double, 9, 1> face;
         face << point(), point(), point();
-        check(face_volume_gradient(face), local_gradient<9>(volume, face));
-        check(triangle_area_gradient(face), local_gradient<9>(area, face));
+        check(face_volume, face_volume_slope, face);
+        check(triangle_area, triangle_area_slope, face);
         Eigen::Matrix<double, 12, 1> hinge;
         hinge << point(), point(), point(), point();
-        check(dihedral_angle_gradient(hinge), local_gradient<12>(angle, hinge));
+        check(dihedral_angle, dihedral_angle_slope, hinge);
         smallest_angle = std::min(smallest_angle, dihedral_angle(hinge));
         largest_angle = std::max(largest_angle, dihedral_angle(hinge));
     }
