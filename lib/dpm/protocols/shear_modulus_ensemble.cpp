@@ -20,6 +20,46 @@ double smallest_normal_stress(const DpmSystem3d& system, const Eigen::VectorXd& 
     return sigma.diagonal().minCoeff() / pressure3d(sigma);
 }
 
+namespace {
+
+// The least-squares line of ln<G> against ln<P> over the pressures above onset where <G> > 0, the means over
+// the members other than `left_out` (pass members.size() to keep every member); absent with fewer than two
+// such pressures.
+std::optional<Line> mean_modulus_fit(const std::vector<ModulusMember>& members, std::size_t left_out)
+{
+    const std::size_t levels = members.front().pressure.size();
+    const auto kept = static_cast<double>(members.size() - (left_out < members.size() ? 1 : 0));
+    std::vector<double> fitted_p, fitted_g;
+    for (std::size_t l = 1; l < levels; ++l) {
+        double p = 0, g = 0;
+        for (std::size_t k = 0; k < members.size(); ++k)
+            if (k != left_out) p += members[k].pressure[l] / kept, g += members[k].modulus[l] / kept;
+        if (g > 0) fitted_p.push_back(p), fitted_g.push_back(g);
+    }
+    return fit_power_law(fitted_p, fitted_g);
+}
+
+} // namespace
+
+// Tukey's jackknife (Efron and Stein, Ann. Statist. 9, 586 (1981)); why it and not the fit's error: the header.
+std::optional<double> jackknife_exponent_error(const std::vector<ModulusMember>& members)
+{
+    const std::size_t n = members.size();
+    if (n < 2) return std::nullopt;
+    std::vector<double> exponents;
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto line = mean_modulus_fit(members, k);
+        if (!line) return std::nullopt;
+        exponents.push_back(line->slope);
+    }
+    double mean = 0, squares = 0;
+    for (double e : exponents)
+        mean += e / static_cast<double>(n);
+    for (double e : exponents)
+        squares += (e - mean) * (e - mean);
+    return std::sqrt(static_cast<double>(n - 1) / static_cast<double>(n) * squares);
+}
+
 EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
                                 RunContext& context)
 {
@@ -55,14 +95,8 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
         context.table(tables.mean, {{"P", unit, "ensemble mean pressure"},
                                     {"G", unit, "ensemble mean shear modulus <G>"},
                                     {"G_linear", unit, "ensemble mean linear-response shear modulus"}});
-    std::vector<double> fitted_p, fitted_g;
-    for (std::size_t l = 0; l < levels; ++l) {
+    for (std::size_t l = 0; l < levels; ++l)
         mean.row({mean_p[l], mean_g[l], mean_linear[l]});
-        if (l > 0 && mean_g[l] > 0) { // the fit is over the pressures above onset
-            fitted_p.push_back(mean_p[l]);
-            fitted_g.push_back(mean_g[l]);
-        }
-    }
     std::vector<double> slopes;
     for (const ModulusMember& m : members) {
         std::vector<double> p, g;
@@ -83,9 +117,10 @@ EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const
     out.G_max_pressure = mean_g.back();
     out.G_linear_onset = mean_linear.front();
     out.G_linear_max_pressure = mean_linear.back();
-    if (const auto line = fit_power_law(fitted_p, fitted_g)) {
+    if (const auto line = mean_modulus_fit(members, members.size())) {
         out.eta = line->slope;
         out.eta_error = std::sqrt(line->slope_variance);
+        out.eta_standard_error = jackknife_exponent_error(members);
     }
     return out;
 }
@@ -98,6 +133,8 @@ void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, 
     s["shear_modulus_exponent_error" + suffix] =
         e.eta_error ? nlohmann::json(*e.eta_error) : nlohmann::json(nullptr);
     s["force_max" + suffix] = e.force_max;
+    s["shear_modulus_exponent_standard_error" + suffix] =
+        e.eta_standard_error ? nlohmann::json(*e.eta_standard_error) : nlohmann::json(nullptr);
     s["shear_modulus_exponent_spread" + suffix] =
         e.eta_spread ? nlohmann::json(*e.eta_spread) : nlohmann::json(nullptr);
     s["packings_with_slope" + suffix] = e.packings_with_slope;

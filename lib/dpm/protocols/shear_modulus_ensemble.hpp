@@ -91,8 +91,13 @@ struct EnsembleModulus
 {
     double G_onset = 0, G_max_pressure = 0;               // <G> at P_t and at the largest pressure
     double G_linear_onset = 0, G_linear_max_pressure = 0; // the same for the linear-response G
-    int saddles = 0;                      // states (packing, pressure) whose Hessian has a negative mode
-    std::optional<double> eta, eta_error; // slope of ln<G> against ln<P> and its standard error
+    int saddles = 0; // states (packing, pressure) whose Hessian has a negative mode
+    // Slope of ln<G> against ln<P> and the standard error of that least-squares fit to the means (their
+    // scatter about a line, not the ensemble's sampling error).
+    std::optional<double> eta, eta_error;
+    // The ensemble's standard error of eta, by the jackknife over the packings (shear_modulus_ensemble.cpp):
+    // what a claim on eta is decided against.
+    std::optional<double> eta_standard_error;
     // The same slope fitted to each packing's own G(P) above onset (where G > 0 at >= 2 pressures): their
     // sample standard deviation over the packings (>= 2 of them) and how many had a slope. The ensemble's
     // exponent is known to about spread / sqrt(packings) (the size a claim on eta needs).
@@ -111,11 +116,20 @@ struct ModulusTables
     std::string pressure_meaning; // e.g. "pressure Tr(Sigma)/2, eq. (9.26)"
 };
 
+// Jackknife standard error of the exponent eta of the ensemble's <G>(<P>) over its n packings: with eta_(k)
+// the exponent of the means without packing k, SE^2 = (n - 1)/n sum_k (eta_(k) - eta_(.))^2, eta_(.) their
+// mean (Tukey's estimator; Efron and Stein, Ann. Statist. 9, 586 (1981)). eta is a non-linear function of
+// ensemble means, so neither the fit's own error (the scatter of a few points about a line) nor the spread
+// of the packings' own exponents (another estimator) is its sampling error; the jackknife's is. Absent below
+// two packings and where leaving a packing out leaves fewer than two pressures above onset with <G> > 0.
+std::optional<double> jackknife_exponent_error(const std::vector<ModulusMember>& members);
+
 // Writes both tables and returns the means and the fit.
 EnsembleModulus report_ensemble(const std::vector<ModulusMember>& members, const ModulusTables& tables,
                                 RunContext& context);
 
-// Summary keys G_onset, G_max_pressure, shear_modulus_exponent, shear_modulus_exponent_error, force_max,
+// Summary keys G_onset, G_max_pressure, shear_modulus_exponent, shear_modulus_exponent_error,
+// shear_modulus_exponent_standard_error (the jackknife's), shear_modulus_exponent_spread, force_max,
 // G_linear_onset, G_linear_max_pressure and saddles, each followed by `suffix` (null for an absent
 // exponent).
 void write_modulus_summary(const EnsembleModulus& e, const std::string& suffix, nlohmann::json& summary);

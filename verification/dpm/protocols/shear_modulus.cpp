@@ -9,6 +9,7 @@
 #include "dpm/analysis/linear_shear_modulus.hpp"
 #include "dpm/analysis/stress.hpp"
 #include "dpm/protocols/jam.hpp"
+#include "dpm/protocols/shear_modulus_ensemble.hpp"
 #include "support/tolerance.hpp"
 
 #include <cmath>
@@ -76,4 +77,37 @@ TEST_CASE("where Newton crawls, FIRE relaxes first and G equals the linear respo
                  << r.system.box->transpose() << ", largest force after the polish " << g.force_max);
     CHECK(linear.negative_modes == 0);
     CHECK_CLOSE(g.modulus, linear.modulus, (Tolerance{1e-2, 0}));
+}
+
+TEST_CASE("the ensemble's exponent eta of <G> ~ P^eta: its jackknife standard error over the packings")
+{
+    using softgrain::verification::round_off;
+    // Members with the same pressures (onset 0.5, then 1 and e, so that ln P = 0, 1 above onset).
+    const auto member = [](std::vector<double> modulus) {
+        ModulusMember m;
+        m.pressure = {0.5, 1.0, std::exp(1.0)};
+        m.modulus = std::move(modulus);
+        return m;
+    };
+    // G_k = c_k P^(1/2) for every packing: every leave-one-out mean has the exponent 1/2, so the standard
+    // error is zero (round-off of the logarithms of O(1) means).
+    std::vector<ModulusMember> same;
+    for (double c : {1.0, 2.0, 3.0})
+        same.push_back(member({c * std::sqrt(0.5), c, c * std::exp(0.5)}));
+    const auto zero = jackknife_exponent_error(same);
+    REQUIRE(zero);
+    CHECK_CLOSE(*zero, 0.0, (Tolerance{0, 16 * round_off}));
+    // G = 1 at P = 1 and a_k at P = e: eta_(k) = ln(mean of the other a), here ln 3, ln 2.5 and ln 1.5 for
+    // a = (1, 2, 4); SE^2 = (n - 1)/n sum_k (eta_(k) - mean)^2, Tukey's estimator, written out.
+    const std::vector<ModulusMember> spread = {member({1, 1, 1}), member({1, 1, 2}), member({1, 1, 4})};
+    const double e1 = std::log(3.0), e2 = std::log(2.5), e3 = std::log(1.5), mean = (e1 + e2 + e3) / 3;
+    const double expected = std::sqrt(
+        2.0 / 3.0 * ((e1 - mean) * (e1 - mean) + (e2 - mean) * (e2 - mean) + (e3 - mean) * (e3 - mean)));
+    const auto se = jackknife_exponent_error(spread);
+    REQUIRE(se);
+    CHECK_CLOSE(*se, expected, (Tolerance{16 * round_off, 0}));
+    // Without the third packing <G> at P = e is (-1 + 1)/2 = 0: one pressure with <G> > 0, no exponent, so
+    // no standard error; nor with one packing.
+    CHECK_FALSE(jackknife_exponent_error({member({1, 1, -1}), member({1, 1, 1}), member({1, 1, 3})}));
+    CHECK_FALSE(jackknife_exponent_error({member({1, 1, 2})}));
 }
