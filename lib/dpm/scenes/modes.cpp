@@ -36,8 +36,9 @@ struct ModesOptions
     ShapeStiffness stiffness;        // k_a = 1 sets the energy unit k_a a0^2
     double zero_threshold = 1e-13;   // [k_a a0]
     std::uint64_t seed = 1;
-    int lowest_modes = 0;                     // 0: every mode (dense)
-    Relaxation relaxation = Relaxation::fire; // packings: the dpm.jam protocol's minimiser
+    int lowest_modes = 0;                      // 0: every mode (dense)
+    Relaxation relaxation = Relaxation::fire;  // packings: the dpm.jam protocol's minimiser
+    double fire_step = JamOptions{}.fire_step; // packings: the dpm.jam protocol's largest FIRE step
 };
 
 OptionBinding<ModesOptions> modes_binding()
@@ -92,6 +93,7 @@ OptionBinding<ModesOptions> modes_binding()
             "mode (summary modes_computed)")
         .non_negative();
     bind_relaxation(binding, &ModesOptions::relaxation, "packings: the dpm.jam protocol");
+    bind_fire_step(binding, &ModesOptions::fire_step);
     binding.check([](const ModesOptions& options) {
         if (options.particles > 1) return;
         if (!options.model)
@@ -382,6 +384,7 @@ JamOptions packing_jam_options(const ModesOptions& options)
     jam.pressures = 0;
     jam.seed = options.seed;
     jam.relaxation = options.relaxation;
+    jam.fire_step = options.fire_step;
     return jam;
 }
 

@@ -32,6 +32,7 @@ OptionBinding<RearrangementOptions> rearrangement_binding()
                  "smooth disks N, half small (sigma = 1), half large (1.4)")
         .at_least(2);
     binding.seed(jam(&JamOptions::seed), "seed", "seed of the random initial placement");
+    bind_fire_step(binding, jam(&JamOptions::fire_step));
     binding
         .real(jam(&JamOptions::pressure_onset), "pressure_onset", "k_c",
               "P_t: jamming onset pressure the search starts at")
