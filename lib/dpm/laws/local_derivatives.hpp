@@ -161,7 +161,7 @@ LocalDerivatives<N> local_hessian(const Term& term, const Eigen::Matrix<double, 
 }
 
 // Value, gradient and Hessian of a local measure from its analytic gradient `slope`, a generic callable
-// x -> dq/dx written for any scalar (shape_energy3d.hpp): the Hessian is the forward-mode Jacobian of the
+// (x, q) -> dq/dx written for any scalar, q the measure's value at x (shape_energy.hpp): the Hessian is the forward-mode Jacobian of the
 // gradient, one first-order AutoDiff sweep over the gradient's code instead of local_hessian's nested sweep
 // over the measure's (whose scalars carry N (N + 1) numbers). The same exact derivative, to round-off; for
 // the dihedral angle (N = 12) about ten times cheaper. The Jacobian of a gradient is symmetric, its
@@ -173,7 +173,8 @@ LocalDerivatives<N> local_hessian_from_slope(const Measure& measure, const Slope
     Eigen::Matrix<FirstOrder<N>, N, 1> ad;
     for (int k = 0; k < N; ++k)
         ad(k) = FirstOrder<N>(x(k), N, k);
-    const Eigen::Matrix<FirstOrder<N>, N, 1> gradient = slope(ad);
+    const FirstOrder<N> q = measure(ad);
+    const Eigen::Matrix<FirstOrder<N>, N, 1> gradient = slope(ad, q);
     LocalDerivatives<N> d;
     d.value = measure(x);
     for (int k = 0; k < N; ++k) {

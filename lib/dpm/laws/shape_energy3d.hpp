@@ -81,8 +81,8 @@ inline constexpr auto dihedral_angle = []<class Scalar>(const Eigen::Matrix<Scal
 //     d theta/d a = -(d theta/d b + d theta/d c + d theta/d d); undefined for a degenerate face.
 // Their forward-mode Jacobian (local_hessian_from_slope) costs a fifteenth of nested AutoDiff of the angle
 // itself, which took 80 % of a 3D packing's Hessian assembly.
-inline constexpr auto face_volume_slope =
-    []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Eigen::Matrix<Scalar, 9, 1> {
+inline constexpr auto face_volume_slope = []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x,
+                                                           const Scalar&) -> Eigen::Matrix<Scalar, 9, 1> {
     using Vector = Eigen::Matrix<Scalar, 3, 1>;
     const Vector r0 = x.template segment<3>(0), r1 = x.template segment<3>(3), r2 = x.template segment<3>(6);
     const Scalar six(6.0);
@@ -92,12 +92,12 @@ inline constexpr auto face_volume_slope =
 };
 
 inline constexpr auto triangle_area_slope =
-    []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x) -> Eigen::Matrix<Scalar, 9, 1> {
-    using std::sqrt;
+    []<class Scalar>(const Eigen::Matrix<Scalar, 9, 1>& x,
+                     const Scalar& area) -> Eigen::Matrix<Scalar, 9, 1> {
     using Vector = Eigen::Matrix<Scalar, 3, 1>;
     const Vector r0 = x.template segment<3>(0), r1 = x.template segment<3>(3), r2 = x.template segment<3>(6);
     const Vector n = (r1 - r0).cross(r2 - r0);
-    const Scalar length = sqrt(n.squaredNorm());
+    const Scalar length = Scalar(2.0) * area; // |n|
     const Vector m = n / length;
     const Vector g1 = Scalar(0.5) * (r2 - r0).cross(m), g2 = Scalar(0.5) * m.cross(r1 - r0);
     Eigen::Matrix<Scalar, 9, 1> g;
@@ -105,8 +105,8 @@ inline constexpr auto triangle_area_slope =
     return g;
 };
 
-inline constexpr auto dihedral_angle_slope =
-    []<class Scalar>(const Eigen::Matrix<Scalar, 12, 1>& x) -> Eigen::Matrix<Scalar, 12, 1> {
+inline constexpr auto dihedral_angle_slope = []<class Scalar>(const Eigen::Matrix<Scalar, 12, 1>& x,
+                                                              const Scalar&) -> Eigen::Matrix<Scalar, 12, 1> {
     using std::sqrt;
     using Vector = Eigen::Matrix<Scalar, 3, 1>;
     const Vector a = x.template segment<3>(0), b = x.template segment<3>(3), c = x.template segment<3>(6),
