@@ -164,7 +164,7 @@ LocalDerivatives<N> local_hessian(const Term& term, const Eigen::Matrix<double, 
 // (x, q) -> dq/dx written for any scalar, q the measure's value at x (shape_energy.hpp): the Hessian is the forward-mode Jacobian of the
 // gradient, one first-order AutoDiff sweep over the gradient's code instead of local_hessian's nested sweep
 // over the measure's (whose scalars carry N (N + 1) numbers). The same exact derivative, to round-off; for
-// the dihedral angle (N = 12) about ten times cheaper. The Jacobian of a gradient is symmetric, its
+// the dihedral angle (N = 12) about fifteen times cheaper. The Jacobian of a gradient is symmetric, its
 // round-off is not: symmetrised, so that the assembled Hessian is symmetric to the last bit.
 template <int N, class Measure, class Slope>
 LocalDerivatives<N> local_hessian_from_slope(const Measure& measure, const Slope& slope,

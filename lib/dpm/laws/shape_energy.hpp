@@ -130,7 +130,7 @@ double measure_term_with_hessian(const Measure& measure, const Slope& slope, con
 }
 
 // The value and gradient path is kept apart from the Hessian's and inline: it runs at every edge, corner,
-// face and hinge of every FIRE force evaluation, where a call per term cost 35 % of a 2D evaluation.
+// face and hinge of every FIRE force evaluation, where a call per term made a 2D one 16 % slower.
 template <int Dim, int K, class Measure, class Slope>
 inline double measure_term(const Measure& measure, const Slope& slope, const std::array<int, K>& points,
                            const Eigen::VectorXd& x, double k, double rest, double gamma,
